@@ -662,14 +662,34 @@ def test_a_load_cell_stuck_early_in_the_tare_is_no_tare_either(config, tmp_path)
     assert max(volts for _, volts in backend.commands) == 0.0
 
 
-def test_a_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_run(config,
-                                                                               tmp_path):
-    # Stuck from the start: the tare on one code is said (a cell quieter than a step reads so
-    # too) and the run goes on, the stuck-cell interlock disarmed; it then recorded one force
-    # at every step up to 1.0 bar and ended complete, exit 0, for identify and the report to
-    # use. A cell that never left its code from before the first pressure to the end, with the
-    # muscle pressurised, measured nothing: all steps done, failed, exit 1, with why.
+def test_a_load_cell_on_one_code_at_the_tare_stops_the_run_before_any_pressure(config,
+                                                                                tmp_path):
+    # Stuck from the start: the tare on one code was only warned of, and the run went on, the
+    # stuck-cell interlock disarmed: 1.0 bar into the muscle with the force limit blind, the
+    # run marked failed only at its end. The tare refuses it: nothing pressurised, the
+    # regulator vented and verified, every sample kept, run.json saying why.
     c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert re.fullmatch(r"TareInvalid: tare invalid: the load cell read one ADC code, 0\.0146 V "
+                        r"\(\+2\.9 N at loadcell\.offset_V=0 V\), all 20 times: a stuck, .*"
+                        r"; nothing was pressurised", result.reason), result.reason
+    assert max(volts for _, volts in backend.commands) == 0.0
+    run = load_run(result.path)
+    assert run.meta.status == "failed" and run.meta.reason == result.reason
+    assert (run.samples["phase"] == "tare").sum() == 20 and run.meta.vent_check["verified"]
+    assert not result.manual_vent_required and not list(bench_folder("sim-Dev1").glob("*.json"))
+
+
+def test_a_quiet_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_run(config,
+                                                                                     tmp_path):
+    # A cell quieter than a step (0.3 mV rms) that sticks 1.5 s into a 2 s tare: its tare shows
+    # two codes, strays less than a step (the stuck-cell interlock stays disarmed) and holds
+    # its code only 0.5 s, so it passes. It recorded one force at every step up to 1.0 bar and
+    # ended complete, exit 0. A cell that never left its code from before the first pressure to
+    # the end, with the muscle pressurised, measured nothing: all steps done, failed, exit 1.
+    c = config.replace(sim={"noise_V": 0.0003, "faults": {"loadcell_stuck_at_s": 1.5}})
     result = acquire(c, out_root=tmp_path, **QUIET)
     assert result.status == "failed" and result.exit_code == 1, result.reason
     assert re.fullmatch(r"all 3 steps done, but the load cell read one ADC code \(0\.0[0-9]+ V\) "
@@ -678,6 +698,7 @@ def test_a_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_run(con
                         r"pulled one ADC step \(0\.24 N\); its forces measure nothing, and the "
                         r"force limit was blind", result.reason), result.reason
     run = load_run(result.path)
+    assert run.samples.query("phase == 'tare'")["loadcell_V"].nunique() == 2
     assert run.steps["force_N_mean"].nunique() == 1 and run.meta.vent_check["verified"]
 
 
