@@ -174,6 +174,7 @@ class Acquisition:
         # the command has been too far from that one for a frozen monitor to pass (see _unmoved)
         self._moved: tuple[float, float] | None = None
         self._unmoved_since_s: float | None = None
+        self._unmoved_command_bar = 0.0  # the last command it has not moved with since then
         # the monitor moved with a command this run (more than half a change larger than the
         # vent threshold, see _unmoved): its fall after a vent as a step begins is then no
         # output that lost its gain
@@ -486,6 +487,14 @@ class Acquisition:
         moved_command, moved_bar = self._moved
         change = commanded - moved_command
         if abs(change) <= safety.vent_below_bar:
+            since, held = self._unmoved_since_s, self._unmoved_command_bar
+            if since is not None and t_s - since >= safety.pressure_follow_s - 1e-9:
+                # the command came back to the reading before the next sample could judge it
+                # (pre-conditioning's top held as long as pressure_follow_s, then 0 bar): the
+                # monitor had that long under it and did not move
+                self._tripped_below(pressure, held)
+                return self._unmoved_said(pressure, held, f"from {since:g} s to {t_s:g} s",
+                                          moved_bar, moved_command)
             self._unmoved_since_s = None
             if commanded == moved_command:  # the reading the next change is judged from
                 self._moved = (commanded, pressure)
@@ -496,16 +505,25 @@ class Acquisition:
             return None
         if self._unmoved_since_s is None:
             self._unmoved_since_s = t_s
-        elif (t_s - self._unmoved_since_s > safety.pressure_follow_s
-              and abs(pressure - commanded) <= safety.pressure_tolerance_bar):
+        self._unmoved_command_bar = commanded
+        if (t_s - self._unmoved_since_s > safety.pressure_follow_s
+                and abs(pressure - commanded) <= safety.pressure_tolerance_bar):
             self._tripped_below(pressure, commanded)
-            return (f"pressure interlock: the monitor does not move with the command: "
-                    f"{pressure:.3f} bar measured against {commanded:g} bar commanded since "
-                    f"{self._unmoved_since_s:g} s, after {moved_bar:.3f} bar under "
-                    f"{moved_command:g} bar (a working regulator's monitor moves more than half "
-                    f"the change within {safety.pressure_follow_s:g} s): a monitor fault "
-                    "(stuck), or a regulator without supply")
+            return self._unmoved_said(pressure, commanded, f"since {self._unmoved_since_s:g} s",
+                                      moved_bar, moved_command)
         return None
+
+    def _unmoved_said(self, pressure: float, commanded: float, span: str, moved_bar: float,
+                      moved_command: float) -> str:
+        """The stuck-monitor interlock's message: ``pressure`` [bar] read against ``commanded``
+        over ``span`` (since when, or from when to when), after ``moved_bar`` under
+        ``moved_command``."""
+        follow_s = self.config.safety.pressure_follow_s
+        return (f"pressure interlock: the monitor does not move with the command: "
+                f"{pressure:.3f} bar measured against {commanded:g} bar commanded {span}, after "
+                f"{moved_bar:.3f} bar under {moved_command:g} bar (a working regulator's monitor "
+                f"moves more than half the change within {follow_s:g} s): a monitor fault "
+                "(stuck), or a regulator without supply")
 
     def _overpressure(self, t_s: float, pressure: float) -> str | None:
         """The over-pressure interlock's message for this measured pressure [bar], or None."""

@@ -317,6 +317,31 @@ def test_a_monitor_frozen_within_the_tolerance_of_its_step_verifies_no_vent(conf
     assert json.loads(marker.read_text())["unfollowed_bar"] == 0.12
 
 
+def test_a_monitor_frozen_at_zero_is_caught_as_pre_conditioning_leaves_its_top(config,
+                                                                               tmp_path):
+    # Frozen at 0 bar: pre-conditioning held 1 bar from 2 s for exactly pressure_follow_s (5 s)
+    # and went back to 0 bar, which the frozen reading matches, before any sample was 5 s past
+    # the command: neither interlock tripped, and the run went on to trip 5 s into its first
+    # step (at 17 s). The command's return judges the monitor on the time it had: 7 s.
+    c = config.replace(sequence={"preconditioning_cycles": 1},
+                       sim={"truth": {"monitor_stuck_bar": 0.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    assert re.match(r"pressure interlock: the monitor does not move with the command: "
+                    r"0\.00\d bar measured against 1 bar commanded from 2 s to 7 s, after "
+                    r"0\.00\d bar under 0 bar \(a working regulator's monitor moves more than "
+                    r"half the change within 5 s\): a monitor fault \(stuck\), or a regulator "
+                    r"without supply; vented; ", result.reason), result.reason
+    run = load_run(result.path)
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    assert tripped["time_s"].iloc[0] == pytest.approx(7.0) and (run.samples["step"] < 0).all()
+    assert run.meta.vent_check["unfollowed_bar"] == 1.0  # its reading verifies no vent
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 1 bar)")
+    # a working monitor under the same pre-conditioning: no fault
+    assert acquire(config.replace(sequence={"preconditioning_cycles": 1}), out_root=tmp_path,
+                   **QUIET).status == "complete"
+
+
 @pytest.mark.parametrize("truth", [{}, {"monitor_gain": 0.9, "monitor_offset_bar": -0.04,
                                         "monitor_hysteresis_bar": 0.1}])
 def test_a_monitor_that_moves_with_small_steps_is_no_monitor_fault(config, tmp_path, truth):
