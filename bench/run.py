@@ -50,6 +50,7 @@ vent could not be verified (vent by hand; it wins over every other), 1 otherwise
 from __future__ import annotations
 
 import dataclasses
+import math
 import queue
 import sys
 import threading
@@ -1024,6 +1025,11 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
+        unpressurised = self._unpressurised(acq, self.vent_check is not None and (
+            self.vent_check.device_lost or isinstance(failure, DaqDisconnected)))
+        if unpressurised:  # a lost device's vent check proves nothing, and nothing needs it
+            problems.append(unpressurised)
+            self.vent_check = None
         if self.vent_check is not None and acq is not None:
             self.vent_check = self._weighed(acq, self.vent_check)
         if acq is not None and acq.interlock_vent_failed:  # said before: what came of it
@@ -1038,6 +1044,32 @@ class BenchRun:
         if closing:
             problems.append(closing)
         return self._record(status, reason, problems, told, signal_name, signal_number)
+
+    def _unpressurised(self, acq: Acquisition | None, lost: bool) -> str:
+        """What to say of a vent the device's loss (``lost``) kept from being checked when this
+        run applied no pressure: it asked for none above 0 bar, the monitor read none above
+        ``safety.vent_below_bar``, and no run had died on the bench (whose pressure this run
+        would have found there); no vent by hand is asked for. "" otherwise (a manual
+        regulator's operator reads the vent)."""
+        check, below = self.vent_check, self.config.safety.vent_below_bar
+        if not lost or check is None or check.verified or self._dead_runs or \
+                not self.config.regulator.electronic:
+            return ""
+        then = "; see that the regulator reads 0 bar before the next run"
+        if acq is None:  # lost before any command of the run's own, the open's vent included
+            if self._opened:
+                return ""
+            return ("no pressure was applied: the device was lost at its open, before this run "
+                    "wrote anything to it, not even the vent, so the regulator holds what it "
+                    "held before (no run on this bench is marked as having left a pressure)"
+                    + then)
+        if acq.asked_bar > 0 or acq.highest_bar > below:
+            return ""
+        read = (f"the monitor read at most {max(acq.highest_bar, 0.0):.3f} bar before the loss"
+                if math.isfinite(acq.measured_bar) else "nothing was read before the loss")
+        return (f"no pressure was applied: this run commanded none above 0 bar (0 bar was the "
+                f"last command the device took) and {read}; the vent written after the loss "
+                "could not be confirmed, the device being gone" + then)
 
     def _record(self, status: RunStatus, reason: str, problems: list[str], told,
                 signal_name, signal_number) -> tuple[RunStatus, str]:

@@ -132,6 +132,9 @@ class Acquisition:
         self.highest_bar = 0.0
         self.command_bar = 0.0
         self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
+        # the highest pressure a write was asked for [bar]: one that failed may still have
+        # reached the device
+        self.asked_bar = 0.0
         # the commands written, by the device's sample clock when each was issued (index, bar),
         # and the command before the oldest kept: the command each sample was acquired under
         self._issued: list[tuple[int, float]] = []
@@ -668,6 +671,7 @@ class Acquisition:
         clamped = min(max(pressure_bar, 0.0), reg.max_pressure_bar)
         volts = reg.command_volts(clamped)
         ok = self.written = False
+        self.asked_bar = max(self.asked_bar, clamped)
         if self.lease is not None and clamped > 0:
             self._mark(clamped)
         # watched until the device's clock is read after the write (a driver call too)
