@@ -46,6 +46,21 @@ def test_calibrate_loadcell_refuses_a_mass_beyond_the_cells_capacity(config):
                                                        rel=2e-3)
 
 
+def test_calibrate_loadcell_on_a_stuck_cell_says_so(config):
+    # a cell stuck from the start reads 0.0146 V under 0, 5 and 10 kg: the fit's zero slope was
+    # said as "volts fall as the mass grows (slope 0 V/N): expected a tension load cell wired
+    # with the positive sign", exit 2, as if the wiring were reversed
+    from mkm.bench.backend import BenchError
+
+    stuck = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
+    with pytest.raises(BenchError) as failed:
+        calibrate_loadcell(stuck, [0.0, 5.0, 10.0], seconds=1.0)
+    assert str(failed.value) == (
+        "the load cell read one ADC code, 0.0146 V (+2.9 N at loadcell.offset_V=0 V), under "
+        "every mass (0, 5, 10 kg): a stuck, disconnected or railed cell reads so; check its "
+        "cable, amplifier and supply; nothing was fitted")
+
+
 def test_tare_on_the_sim(config):
     from mkm.bench.sequence import TareInvalid
 
