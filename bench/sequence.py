@@ -175,7 +175,7 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
     drift_N, at_rest = _tare_drift(v * cell.sensitivity_N_per_V, config)
     return {"offset_V": offset, "std_V": std, "n": int(v.size), "std_N": std_N,
             "shift_N": shift_N, "config_offset_V": cell.offset_V, "drift_N": drift_N,
-            "at_rest": at_rest, "held_s": held_s}
+            "at_rest": at_rest, "held_s": held_s, "stray_V": stray_V}
 
 
 #: a live load cell's tare is refused as one on a single ADC code at most this often, for a cell
@@ -269,14 +269,23 @@ def rest_warning(tare: dict, config: BenchConfig) -> str:
 def one_code_warning(tare: dict, config: BenchConfig) -> str:
     """What a tare whose last :data:`mkm.bench.worker.STUCK_CELL_S` lay on one ADC code
     (``held_s``) after readings that strayed less than a step (else :func:`validate_tare`
-    refuses it, as it refuses a tare all on one code) means, or "": a stuck or disconnected
-    cell reads so, and the force limit is blind behind it (the stuck-cell interlock needs a
-    tare that strays); a cell quieter than one step reads so too."""
+    refuses it, as it refuses a tare all on one code) means: a stuck or disconnected cell reads
+    so, and the force limit is blind behind it (the stuck-cell interlock needs a tare that
+    strays); a cell quieter than one step reads so too. Else what a tare whose readings strayed
+    less than a step (``stray_V``) means: that interlock is off for the run. Or ""."""
     step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
     held_s = tare.get("held_s", 0.0)
-    if not held_s >= STUCK_CELL_S - 1e-9:
-        return ""
     step_mV = step_V * 1e3
+    if not held_s >= STUCK_CELL_S - 1e-9:
+        stray_V = tare.get("stray_V", math.inf)
+        if stray_V > step_V:
+            return ""
+        cell = config.loadcell
+        return (f"the load cell spreads {stray_V * 1e3:.2f} mV rms at 0 bar "
+                f"({stray_V * cell.sensitivity_N_per_V:.2f} N), less than one ADC step "
+                f"({step_mV:.2f} mV): the stuck-cell interlock cannot tell it stuck from quiet "
+                "and is off for this run, so a cell that sticks is found only at the run's end, "
+                "the force limit blind meanwhile")
     read = (f"on one ADC code for its last {held_s:.1f} s, where it strayed less than a step "
             "before")
     return (f"the tare read the load cell {read}: a stuck or disconnected cell reads so, and "

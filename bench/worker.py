@@ -126,8 +126,13 @@ class Acquisition:
         # the load cell's last code [V] and since when it has read it [s], the first sample
         # acquired under a pressure commanded [s], and the highest plausible pressure measured
         # [bar]: a cell on one code from before any pressure to the end, while the muscle was
-        # pressurised, measured nothing (:meth:`one_code_throughout`)
+        # pressurised, measured nothing (:meth:`one_code_throughout`); so did one on one code
+        # from any time to the end while the monitor rose more than the vent threshold: the
+        # lowest plausible reading since the code was first read, and the largest rise since
+        # (rise, from, to) [bar]
         self._same_cell: tuple[float, float] | None = None
+        self._same_low_bar = math.inf
+        self._same_rise = (0.0, math.nan, math.nan)
         self._pressure_from_s: float | None = None
         self.highest_bar = 0.0
         self.command_bar = 0.0
@@ -344,7 +349,13 @@ class Acquisition:
         pressure = float(reg.monitor_bar(monitor_V)) if self.electronic else self.manometer_bar
         force = (cell_V - self.tare_offset_V) * self.cell.sensitivity_N_per_V
         commanded = self._commanded_at(index) if self.electronic else math.nan
+        if math.isfinite(cell_V) and (self._same_cell is None or self._same_cell[0] != cell_V):
+            self._same_cell = (cell_V, index / self.rate_hz)
+            self._same_low_bar, self._same_rise = math.inf, (0.0, math.nan, math.nan)
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
+            self._same_low_bar = min(self._same_low_bar, pressure)
+            if pressure - self._same_low_bar > self._same_rise[0]:
+                self._same_rise = (pressure - self._same_low_bar, self._same_low_bar, pressure)
             self.measured_bar = pressure
             self.highest_bar = max(self.highest_bar, pressure)
             if phase != "vent":  # the vent check's come after the vent
@@ -352,8 +363,6 @@ class Acquisition:
                 self._recent_command_bar = commanded
                 if commanded > 0:
                     self._pressurised = (pressure, commanded)
-        if math.isfinite(cell_V) and (self._same_cell is None or self._same_cell[0] != cell_V):
-            self._same_cell = (cell_V, index / self.rate_hz)
         if self._pressure_from_s is None and commanded > 0:
             self._pressure_from_s = index / self.rate_hz
         if math.isfinite(force):
@@ -616,20 +625,35 @@ class Acquisition:
 
     def one_code_throughout(self) -> str:
         """What a load cell that read one ADC code from before the run's first pressure to
-        its end, while the monitor read a pressure above ``safety.vent_below_bar``, means (its
-        forces measure nothing), or "" (a cell that moved, an electronic regulator never
+        its end, while the monitor read a pressure above ``safety.vent_below_bar``, or from a
+        later time to its end while the monitor rose by more than that, means (its forces
+        from then measure nothing: no muscle that pulls more as its pressure rises, nor one
+        that lets go at the vent, holds a live cell to one code; a slack one with a cell
+        quieter than a step may), or "" (a cell that moved, an electronic regulator never
         commanded, a manual one)."""
-        if self._same_cell is None or self._pressure_from_s is None or \
-                self._same_cell[1] > self._pressure_from_s or \
-                not self.highest_bar > self.config.safety.vent_below_bar:
+        below = self.config.safety.vent_below_bar
+        if self._same_cell is None or self._pressure_from_s is None:
             return ""
-        same = self._same_cell[0]
+        same, since_s = self._same_cell
         step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
             * self.cell.sensitivity_N_per_V
-        return (f"the load cell read one ADC code ({same:.4f} V) from before the first pressure "
-                f"to the end, while the monitor read up to {self.highest_bar:.2f} bar: a stuck or "
-                f"disconnected cell, or a muscle that never pulled one ADC step ({step_N:.2f} "
-                "N); its forces measure nothing, and the force limit was blind")
+        blind = "its forces measure nothing, and the force limit was blind"
+        if since_s <= self._pressure_from_s:
+            if not self.highest_bar > below:
+                return ""
+            return (f"the load cell read one ADC code ({same:.4f} V) from before the first "
+                    f"pressure to the end, while the monitor read up to {self.highest_bar:.2f} "
+                    f"bar: a stuck or disconnected cell, or a muscle that never pulled one ADC "
+                    f"step ({step_N:.2f} N); {blind}")
+        rise, low, high = self._same_rise
+        if not rise > below:
+            return ""
+        force_N = (same - self.tare_offset_V) * self.cell.sensitivity_N_per_V
+        return (f"the load cell read one ADC code ({same:.4f} V, {force_N:+.2f} N) from "
+                f"{since_s:g} s to the end, the vent included, "
+                f"while the monitor rose from {low:.2f} to {high:.2f} bar: a stuck or "
+                f"disconnected cell, or a muscle that pulled not one ADC step ({step_N:.2f} N) "
+                f"more as its pressure rose; from {since_s:g} s {blind}")
 
     def forces_unchanged(self) -> bool:
         """Every force of :meth:`forces_around_vent`'s two windows is the same reading (a load

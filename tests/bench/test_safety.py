@@ -727,6 +727,38 @@ def test_a_quiet_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_r
     assert run.steps["force_N_mean"].nunique() == 1 and run.meta.vent_check["verified"]
 
 
+def test_a_quiet_load_cell_stuck_mid_run_under_a_slack_muscle_is_no_complete_run(config,
+                                                                                   tmp_path):
+    # 0.8 mV rms of noise: the tare spreads 0.72 mV, less than the 1.22 mV step, so the
+    # stuck-cell interlock stays disarmed. Stuck at 4 s, in the 0.25 bar step at eps 0.18 (the
+    # muscle slack), it read -0.04 N at 1.5 bar, where the muscle pulls 82 N: the run ended
+    # complete, exit 0, the force limit blind through 1.5 bar. A code held from a time to the
+    # end, the vent included, while the monitor rose more than vent_below_bar: failed, exit 1.
+    c = config.replace(muscle={"eps": 0.18}, sequence={"pressures_bar": (0.25, 1.5)},
+                       sim={"noise_V": 0.0008})
+    live = acquire(c, out_root=tmp_path, **QUIET)
+    assert live.status == "complete", live.reason
+    assert load_run(live.path).steps["force_N_mean"].iloc[1] == pytest.approx(82, abs=2)
+    notes: list[str] = []
+    stuck = acquire(c.replace(sim={"faults": {"loadcell_stuck_at_s": 4.0}}), out_root=tmp_path,
+                    notify=notes.append)
+    assert stuck.status == "failed" and stuck.exit_code == 1, stuck.reason
+    # said at the tare, before any pressure: the interlock is off
+    assert re.fullmatch(r"warning: the load cell spreads 0\.[67]\d mV rms at 0 bar \(0\.1\d N\), "
+                        r"less than one ADC step \(1\.22 mV\): the stuck-cell interlock cannot "
+                        r"tell it stuck from quiet and is off for this run, so a cell that "
+                        r"sticks is found only at the run's end, the force limit blind meanwhile",
+                        notes[1]), notes
+    assert stuck.reason == (
+        "all 3 steps done, but the load cell read one ADC code (0.0146 V, -0.04 N) from 3.8 s "
+        "to the end, the vent included, while the monitor rose from 0.25 to 1.50 bar: a stuck "
+        "or disconnected cell, or a muscle that pulled not one ADC step (0.24 N) more as its "
+        "pressure rose; from 3.8 s its forces measure nothing, and the force limit was blind")
+    run = load_run(stuck.path)
+    assert run.meta.tare["std_V"] < 20 / 2 ** 14  # the interlock disarmed: less than a step
+    assert run.steps["force_N_mean"].nunique() == 1
+
+
 def test_a_load_cell_stuck_late_in_the_tare_trips_two_seconds_after_it_stuck(config,
                                                                              tmp_path):
     # Stuck from 4 s of a 5 s tare (1 s of it on one code): the interlock counted its 2 s from
