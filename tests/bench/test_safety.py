@@ -759,6 +759,22 @@ def test_a_quiet_load_cell_stuck_mid_run_under_a_slack_muscle_is_no_complete_run
     assert run.steps["force_N_mean"].nunique() == 1
 
 
+def test_a_quiet_load_cell_stuck_under_a_pulling_muscle_is_named_by_the_vent_check(config,
+                                                                                     tmp_path):
+    # the same quiet cell stuck at 6 s, at 184.6 N in the 0.5 bar step: the vent check read the
+    # monitor fall from 0.5 bar and the cell hold 184.6 N, and said "a muscle that still pulls
+    # ..., and so does a slack one on a load-cell zero moved 184.6 N since the tare", doubting
+    # the monitor too. A cell that held its code while the monitor rose is named as stuck
+    c = config.replace(sim={"noise_V": 0.0008, "faults": {"loadcell_stuck_at_s": 6.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    assert ("the vent could not be verified (the monitor read 0.500 bar before the vent and "
+            "0.003 bar after it, but the load cell read 184.6 N throughout, every reading the "
+            "same where it strayed 0.14 N at the tare: a load cell that does not change while "
+            "the pressure falls is stuck or disconnected") in result.reason, result.reason
+    assert load_run(result.path).meta.vent_check["doubted"] == "the load cell"
+
+
 def test_a_load_cell_stuck_late_in_the_tare_trips_two_seconds_after_it_stuck(config,
                                                                              tmp_path):
     # Stuck from 4 s of a 5 s tare (1 s of it on one code): the interlock counted its 2 s from
