@@ -211,11 +211,16 @@ def one_code_refusal(cell_V: float, n: int, config: BenchConfig) -> str:
             f"({float(cell.force_N(cell_V)):+.1f} N at loadcell.offset_V={cell.offset_V:g} V"
             f"{rail}), all {n} times: a stuck, disconnected or railed cell reads so, and the "
             "force limit is blind behind it; a live cell's noise moves it (one spreading "
-            f"{quiet_V * 1e3:.2f} mV rms or more, {quiet_V / step_V:.2g} of the "
+            f"{quiet_V * 1e3:.2f} mV rms or more, {_share(quiet_V / step_V)} the "
             f"{step_V * 1e3:.2f} mV step, shows two codes in all but one tare of {n} readings "
             f"in {1 / ONE_CODE_ODDS:,.0f}); check the cell's cable, amplifier and supply, and "
             "load it by hand to see its reading move (a live cell quieter than that: lengthen "
             "sequence.tare_s); nothing was pressurised")
+
+
+def _share(ratio: float) -> str:
+    """``ratio`` of a whole in words: "0.49 of", "399 times"."""
+    return f"{ratio:.2g} of" if ratio < 1 else f"{ratio:.3g} times"
 
 
 def held_tail(cell_V) -> tuple[float, int, float]:

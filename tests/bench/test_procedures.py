@@ -162,6 +162,11 @@ def test_a_tare_on_one_code_says_a_railed_cell(config):
                                           r"9\.9988 V \(\+1961\.1 N at loadcell\.offset_V=0 V, "
                                           r"at the input's \+10 V rail\), all 50 times: "):
         validate_tare([top] * 50, config)
+    # two readings alike prove little: a live cell as noisy as 487 mV rms reads so once in 1,000
+    with pytest.raises(TareInvalid, match=r"one spreading 486\.99 mV rms or more, 399 times the "
+                                          r"1\.22 mV step, shows two codes in all but one tare "
+                                          r"of 2 readings in 1,000\)"):
+        validate_tare([0.0] * 2, config.replace(safety={"tare_min_samples": 2}))
 
 
 def test_check_lists_device_steps_and_duration(config):
