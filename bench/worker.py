@@ -182,7 +182,8 @@ class Acquisition:
         # the command has been too far from that one for a frozen monitor to pass (see _unmoved)
         self._moved: tuple[float, float] | None = None
         self._unmoved_since_s: float | None = None
-        self._unmoved_command_bar = 0.0  # the last command it has not moved with since then
+        # the last command it has not moved with since then, and its reading under it [bar]
+        self._unmoved_under = (0.0, 0.0)
         # the monitor moved with a command this run (more than half a change larger than the
         # vent threshold, see _unmoved): its fall after a vent as a step begins is then no
         # output that lost its gain
@@ -499,11 +500,14 @@ class Acquisition:
         moved_command, moved_bar = self._moved
         change = commanded - moved_command
         if abs(change) <= safety.vent_below_bar:
-            since, held = self._unmoved_since_s, self._unmoved_command_bar
-            if since is not None and t_s - since >= safety.pressure_follow_s - 1e-9:
+            since, (held, last_bar) = self._unmoved_since_s, self._unmoved_under
+            towards_bar = (last_bar - moved_bar) * math.copysign(1.0, held - moved_command)
+            if since is not None and t_s - since >= safety.pressure_follow_s - 1e-9 and \
+                    towards_bar <= safety.pressure_tolerance_bar:
                 # the command came back to the reading before the next sample could judge it
                 # (pre-conditioning's top held as long as pressure_follow_s, then 0 bar): the
-                # monitor had that long under it and did not move
+                # monitor had that long under it and did not move (a slow regulator's, moving
+                # more than the tolerance, is the follow interlock's)
                 self._tripped_below(pressure, held)
                 return self._unmoved_said(pressure, held, f"from {since:g} s to {t_s:g} s",
                                           moved_bar, moved_command)
@@ -517,7 +521,7 @@ class Acquisition:
             return None
         if self._unmoved_since_s is None:
             self._unmoved_since_s = t_s
-        self._unmoved_command_bar = commanded
+        self._unmoved_under = (commanded, pressure)
         if (t_s - self._unmoved_since_s > safety.pressure_follow_s
                 and abs(pressure - commanded) <= safety.pressure_tolerance_bar):
             self._tripped_below(pressure, commanded)

@@ -340,6 +340,13 @@ def test_a_monitor_frozen_at_zero_is_caught_as_pre_conditioning_leaves_its_top(c
     # a working monitor under the same pre-conditioning: no fault
     assert acquire(config.replace(sequence={"preconditioning_cycles": 1}), out_root=tmp_path,
                    **QUIET).status == "complete"
+    # a regulator of time constant 8 s moves its monitor 0.46 bar of the 1 bar in those 5 s,
+    # less than half, more than the tolerance: moving, so no monitor fault; it is too slow for
+    # the follow interlock on its way back down instead
+    slow = acquire(config.replace(sequence={"preconditioning_cycles": 1},
+                                  sim={"regulator_tau_s": 8.0}), out_root=tmp_path, **QUIET)
+    assert slow.reason.startswith("pressure interlock: the regulator does not follow: "), \
+        slow.reason
 
 
 @pytest.mark.parametrize("truth", [{}, {"monitor_gain": 0.9, "monitor_offset_bar": -0.04,
