@@ -108,7 +108,7 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
         raise ValueError(f"run {source.path} has {rows} samples and not one finite load-cell "
                          "reading: nothing to reprocess")
     try:
-        tare = validate_tare(tare_V, config) if tare_V else None
+        tare = validate_tare(tare_V, config, pressure_to_follow=False) if tare_V else None
     except TareInvalid as exc:  # the settings given refuse it: bad input, one line
         why = str(exc).removeprefix("tare invalid: ").removesuffix("; nothing was pressurised")
         raise ValueError(f"run {source.path}: its tare is invalid with these settings ({why}): "

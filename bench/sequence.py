@@ -134,8 +134,13 @@ def _zero_said(vented_bar: float, config: BenchConfig) -> str:
                    "zero declared)" if offset else "")
 
 
-def validate_tare(cell_V, config: BenchConfig) -> dict:
+def validate_tare(cell_V, config: BenchConfig, pressure_to_follow: bool = True) -> dict:
     """The tare of load-cell volts ``cell_V`` read at 0 bar, or :class:`TareInvalid` saying why.
+
+    ``pressure_to_follow``: the tare comes before pressure (a run's, `mkm tare`'s, `mkm
+    check`'s), so a cell that reads one code or sticks, behind which the force limit would be
+    blind, is refused; False for a recorded run's tare (`mkm reprocess`), whose offset is taken
+    again whatever the cell did after it.
 
     Returns ``offset_V`` (mean), ``std_V``, ``n``, ``std_N``, ``shift_N`` (offset minus the
     configured ``loadcell.offset_V``, in newtons), ``drift_N`` (the forces' straight-line trend,
@@ -150,7 +155,7 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
         raise TareInvalid(f"tare invalid: {int((~np.isfinite(v)).sum())} of {v.size} load-cell "
                           "samples are not numbers (a broken input)")
     step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
-    if v.max() == v.min():
+    if pressure_to_follow and v.max() == v.min():
         raise TareInvalid(one_code_refusal(float(v[0]), v.size, config))
     offset, std = float(v.mean()), float(v.std(ddof=1))
     std_N = std * cell.sensitivity_N_per_V
@@ -166,7 +171,7 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
                           "calibration)")
     _, intervals, stray_V = held_tail(v)
     held_s = intervals / config.daq.sample_rate_hz
-    if stray_V > step_V and held_s >= STUCK_CELL_S - 1e-9:
+    if pressure_to_follow and stray_V > step_V and held_s >= STUCK_CELL_S - 1e-9:
         raise TareInvalid(f"tare invalid: the load cell read {v[-1]:.4f} V unchanged for the "
                           f"last {held_s:.1f} s of the tare, where it strayed "
                           f"{stray_V * cell.sensitivity_N_per_V:.2f} N before: a stuck or "
