@@ -137,10 +137,10 @@ def _zero_said(vented_bar: float, config: BenchConfig) -> str:
 def validate_tare(cell_V, config: BenchConfig, pressure_to_follow: bool = True) -> dict:
     """The tare of load-cell volts ``cell_V`` read at 0 bar, or :class:`TareInvalid` saying why.
 
-    ``pressure_to_follow``: the tare comes before pressure (a run's, `mkm tare`'s, `mkm
-    check`'s), so a cell that reads one code or sticks, behind which the force limit would be
-    blind, is refused; False for a recorded run's tare (`mkm reprocess`), whose offset is taken
-    again whatever the cell did after it.
+    ``pressure_to_follow``: the tare comes before pressure (a run's, ``mkm tare``'s, ``mkm
+    check``'s), so a cell that reads one code or sticks, behind which the force limit would be
+    blind, is refused; False for a recorded run's tare (``mkm reprocess``), whose offset is
+    taken again whatever the cell did after it.
 
     Returns ``offset_V`` (mean), ``std_V``, ``n``, ``std_N``, ``shift_N`` (offset minus the
     configured ``loadcell.offset_V``, in newtons), ``drift_N`` (the forces' straight-line trend,
