@@ -61,7 +61,7 @@ from pathlib import Path
 from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, DaqDisconnected
 from mkm.bench.bounded import call_within
-from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
+from mkm.bench.config import MONITOR_FAULT, BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
 from mkm.bench.preflight import braid_lock, warnings
@@ -1026,8 +1026,7 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
-        unpressurised = self._unpressurised(acq, self.vent_check is not None and (
-            self.vent_check.device_lost or isinstance(failure, DaqDisconnected)))
+        unpressurised = self._unpressurised(acq)
         if unpressurised:  # a lost device's vent check proves nothing, and nothing needs it
             problems.append(unpressurised)
             self.vent_check = None
@@ -1046,31 +1045,36 @@ class BenchRun:
             problems.append(closing)
         return self._record(status, reason, problems, told, signal_name, signal_number)
 
-    def _unpressurised(self, acq: Acquisition | None, lost: bool) -> str:
-        """What to say of a vent the device's loss (``lost``) kept from being checked when this
-        run applied no pressure: it asked for none above 0 bar, the monitor read none above
-        ``safety.vent_below_bar``, and no run had died on the bench (whose pressure this run
-        would have found there); no vent by hand is asked for. "" otherwise (a manual
-        regulator's operator reads the vent)."""
+    def _unpressurised(self, acq: Acquisition | None) -> str:
+        """What to say of a vent its check could not confirm (the device lost, the monitor's
+        wire off) when this run applied no pressure: it asked for none above 0 bar, the
+        monitor read none above ``safety.vent_below_bar``, and no run had died on the bench
+        (whose pressure this run would have found there); no vent by hand is asked for. ""
+        otherwise (a manual regulator's operator reads the vent)."""
         check, below = self.vent_check, self.config.safety.vent_below_bar
-        if not lost or check is None or check.verified or self._dead_runs or \
+        if check is None or check.verified or self._dead_runs or \
                 not self.config.regulator.electronic:
             return ""
+        # unread, not misread: a monitor that read something wrong (its zero drifted low) may
+        # hide a pressure, and an error of mkm proves nothing
+        unread = check.device_lost or check.problem.startswith(MONITOR_FAULT) or (
+            acq is None and not self._started)
+        if not unread:
+            return ""
         then = "; see that the regulator reads 0 bar before the next run"
-        if acq is None:  # lost before any command of the run's own, the open's vent included
+        if acq is None:  # failed before any command of the run's own, the open's vent included
             if self._opened:
                 return ""
-            return ("no pressure was applied: the device was lost at its open, before this run "
-                    "wrote anything to it, not even the vent, so the regulator holds what it "
-                    "held before (no run on this bench is marked as having left a pressure)"
-                    + then)
+            return ("no pressure was applied: this run wrote nothing to the device, not even "
+                    "the vent (its open failed), so the regulator holds what it held before (no "
+                    "run on this bench is marked as having left a pressure)" + then)
         if acq.asked_bar > 0 or acq.highest_bar > below:
             return ""
-        read = (f"the monitor read at most {max(acq.highest_bar, 0.0):.3f} bar before the loss"
-                if math.isfinite(acq.measured_bar) else "nothing was read before the loss")
+        read = (f"the monitor read at most {max(acq.highest_bar, 0.0):.3f} bar"
+                if math.isfinite(acq.measured_bar) else "nothing was read of the monitor")
         return (f"no pressure was applied: this run commanded none above 0 bar (0 bar was the "
-                f"last command the device took) and {read}; the vent written after the loss "
-                "could not be confirmed, the device being gone" + then)
+                f"last command the device took) and {read}; its vent could not be confirmed "
+                f"({check.problem or check.describe()})" + then)
 
     def _record(self, status: RunStatus, reason: str, problems: list[str], told,
                 signal_name, signal_number) -> tuple[RunStatus, str]:

@@ -260,9 +260,9 @@ def test_a_pulled_cable_at_the_tare_says_no_pressure_was_applied(config, fake_dr
     assert not result.manual_vent_required and "VENT BY HAND" not in result.reason
     assert re.search(r"; no pressure was applied: this run commanded none above 0 bar \(0 bar "
                      r"was the last command the device took\) and the monitor read at most "
-                     r"0\.00\d bar before the loss; the vent written after the loss could not "
-                     r"be confirmed, the device being gone; see that the regulator reads 0 bar "
-                     r"before the next run", result.reason), result.reason
+                     r"0\.00\d bar; its vent could not be confirmed \(the device is gone\); see "
+                     r"that the regulator reads 0 bar before the next run", result.reason), \
+        result.reason
     assert "resetting the device did not bring it back" in result.reason
     run = load_run(result.path)
     assert len(run.samples) == 10 and run.meta.vent_check is None
