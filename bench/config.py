@@ -70,6 +70,7 @@ MAX_TARE_SHIFT_FRACTION = 0.1
 MAX_VENT_BELOW_BAR = 0.2
 MAX_VENT_TIMEOUT_S = 30.0
 MAX_DATASHEET_FRACTION = 0.05
+MONITOR_FAULT = "monitor fault:"  # how :meth:`Regulator.monitor_fault` begins
 MONITOR_MARGIN_FRACTION = 0.025  # 0.1 V of a 4 V span: noise and offset of a working output
 #: The pressure reading's error as ``[regulator]`` declares it, name: (unit, what it is).
 #: Either one +- bound at every pressure (``monitor_accuracy_bar``, alone), or the components a
@@ -311,10 +312,10 @@ class Regulator:
         high = self.monitor_V_at_full_scale + MONITOR_MARGIN_FRACTION * span
         if low <= volts <= high:
             return None
-        return (f"monitor fault: the monitor reads {volts:.3f} V, outside its "
+        return (f"{MONITOR_FAULT} the monitor reads {volts:.3f} V, outside its "
                 f"{self.monitor_V_at_zero:g}-{self.monitor_V_at_full_scale:g} V output "
                 f"(below {low:.3g} V: regulator unpowered or wire off)" if volts < low else
-                f"monitor fault: the monitor reads {volts:.3f} V, above its "
+                f"{MONITOR_FAULT} the monitor reads {volts:.3f} V, above its "
                 f"{self.monitor_V_at_full_scale:g} V full scale")
 
 

@@ -561,7 +561,7 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     operator = make_operator(config, device)
-    volts = []
+    volts, codes = [], set()
     with session(device, "calibrate-loadcell"):
         bounded = _Bounded(device, config.daq.sample_rate_hz)
         bounded.start()
@@ -569,8 +569,17 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
             operator.hang_mass(float(mass))
             while bounded.available() > 0:  # discard what came while the mass was being hung
                 bounded.read(bounded.available(), config.daq.read_timeout_s)
-            volts.append(float(mean_volts(bounded, config, seconds)[:, 0].mean()))
+            cell_V = mean_volts(bounded, config, seconds)[:, 0]
+            codes.update(cell_V.tolist())
+            volts.append(float(cell_V.mean()))
         operator.hang_mass(0.0)
+    if len(codes) == 1:  # no slope to fit: not a cell wired the wrong way round
+        cell, masses = config.loadcell, ", ".join(f"{m:g}" for m in mass_kg)
+        raise BenchError(f"the load cell read one ADC code, {volts[0]:.4f} V "
+                         f"({float(cell.force_N(volts[0])):+.1f} N at loadcell.offset_V="
+                         f"{cell.offset_V:g} V), under every mass ({masses} kg): a stuck, "
+                         "disconnected or railed cell reads so; check its cable, amplifier and "
+                         "supply; nothing was fitted")
     bench = f"{config.daq.backend} bench" + (f" (SIMULATED, seed {config.sim.seed})"
                                                if config.simulated else "")
     return {**fit_loadcell(mass_kg, volts), "measured_on": bench}

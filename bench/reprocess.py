@@ -23,7 +23,7 @@ import numpy as np
 
 from mkm.bench.budget import Instrument
 from mkm.bench.config import BenchConfig, Step, config_from_tables
-from mkm.bench.sequence import HoldStats, validate_tare
+from mkm.bench.sequence import HoldStats, TareInvalid, validate_tare
 from mkm.bench.settings import read_toml_file
 from mkm.bench.storage import (
     CommandRecord,
@@ -107,7 +107,12 @@ def reprocess(run_dir: str | Path, config: BenchConfig, out_root: str | Path | N
     if not finite:
         raise ValueError(f"run {source.path} has {rows} samples and not one finite load-cell "
                          "reading: nothing to reprocess")
-    tare = validate_tare(tare_V, config) if tare_V else None
+    try:
+        tare = validate_tare(tare_V, config, pressure_to_follow=False) if tare_V else None
+    except TareInvalid as exc:  # the settings given refuse it: bad input, one line
+        why = str(exc).removeprefix("tare invalid: ").removesuffix("; nothing was pressurised")
+        raise ValueError(f"run {source.path}: its tare is invalid with these settings ({why}): "
+                         "nothing reprocessed") from None
     offset_V = tare["offset_V"] if tare else cell.offset_V
     steps = source.steps
     windows = {int(s.step): (float(s.start_s) + float(s.settle_s), float(s.end_s))

@@ -50,6 +50,7 @@ vent could not be verified (vent by hand; it wins over every other), 1 otherwise
 from __future__ import annotations
 
 import dataclasses
+import math
 import queue
 import sys
 import threading
@@ -60,7 +61,7 @@ from pathlib import Path
 from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, DaqDisconnected
 from mkm.bench.bounded import call_within
-from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
+from mkm.bench.config import MONITOR_FAULT, BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
 from mkm.bench.preflight import braid_lock, warnings
@@ -921,10 +922,11 @@ class BenchRun:
                 * cell.sensitivity_N_per_V
             tare_std_N = float(tare["std_N"])
             noise_N = ZERO_NOISE_SIGMAS * tare_std_N + 2 * step_N
-            # a cell that strayed more than an ADC step at the tare and reads one value around
-            # the vent is stuck: said as such, the vent still not verified by it
-            stuck = (before[0], tare_std_N) if tare_std_N > step_N and \
-                acq.forces_unchanged() else None
+            # a cell that strayed more than an ADC step at the tare, or held its code while the
+            # monitor rose (a quieter one), and reads one value around the vent is stuck: said
+            # as such, the vent still not verified by it
+            stuck = (before[0], tare_std_N) if acq.forces_unchanged() and (
+                tare_std_N > step_N or acq.one_code_throughout()) else None
             fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar),
                                  stuck, force_per_bar(self.recorder.step_rows, noise_N))
             fell = monitor_unmoved(fell, before[0], *forces, noise_N)
@@ -1024,6 +1026,10 @@ class BenchRun:
                 (acq is None or acq.command_bar == 0.0) and not problems:
             # never started and nothing but vents commanded: there is nothing to verify
             self.vent_check = None
+        unpressurised = self._unpressurised(acq)
+        if unpressurised:  # a lost device's vent check proves nothing, and nothing needs it
+            problems.append(unpressurised)
+            self.vent_check = None
         if self.vent_check is not None and acq is not None:
             self.vent_check = self._weighed(acq, self.vent_check)
         if acq is not None and acq.interlock_vent_failed:  # said before: what came of it
@@ -1038,6 +1044,37 @@ class BenchRun:
         if closing:
             problems.append(closing)
         return self._record(status, reason, problems, told, signal_name, signal_number)
+
+    def _unpressurised(self, acq: Acquisition | None) -> str:
+        """What to say of a vent its check could not confirm (the device lost, the monitor's
+        wire off) when this run applied no pressure: it asked for none above 0 bar, the
+        monitor read none above ``safety.vent_below_bar``, and no run had died on the bench
+        (whose pressure this run would have found there); no vent by hand is asked for. ""
+        otherwise (a manual regulator's operator reads the vent)."""
+        check, below = self.vent_check, self.config.safety.vent_below_bar
+        if check is None or check.verified or self._dead_runs or \
+                not self.config.regulator.electronic:
+            return ""
+        # unread, not misread: a monitor that read something wrong (its zero drifted low) may
+        # hide a pressure, and an error of mkm proves nothing
+        unread = check.device_lost or check.problem.startswith(MONITOR_FAULT) or (
+            acq is None and not self._started)
+        if not unread:
+            return ""
+        then = "; see that the regulator reads 0 bar before the next run"
+        if acq is None:  # failed before any command of the run's own, the open's vent included
+            if self._opened:
+                return ""
+            return ("no pressure was applied: this run wrote nothing to the device, not even "
+                    "the vent (its open failed), so the regulator holds what it held before (no "
+                    "run on this bench is marked as having left a pressure)" + then)
+        if acq.asked_bar > 0 or acq.highest_bar > below:
+            return ""
+        read = (f"the monitor read at most {max(acq.highest_bar, 0.0):.3f} bar"
+                if math.isfinite(acq.measured_bar) else "nothing was read of the monitor")
+        return (f"no pressure was applied: this run commanded none above 0 bar (0 bar was the "
+                f"last command the device took) and {read}; its vent could not be confirmed "
+                f"({check.problem or check.describe()})" + then)
 
     def _record(self, status: RunStatus, reason: str, problems: list[str], told,
                 signal_name, signal_number) -> tuple[RunStatus, str]:

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from collections import deque
+from statistics import NormalDist
 
 import numpy as np
 
@@ -133,8 +134,13 @@ def _zero_said(vented_bar: float, config: BenchConfig) -> str:
                    "zero declared)" if offset else "")
 
 
-def validate_tare(cell_V, config: BenchConfig) -> dict:
+def validate_tare(cell_V, config: BenchConfig, pressure_to_follow: bool = True) -> dict:
     """The tare of load-cell volts ``cell_V`` read at 0 bar, or :class:`TareInvalid` saying why.
+
+    ``pressure_to_follow``: the tare comes before pressure (a run's, ``mkm tare``'s, ``mkm
+    check``'s), so a cell that reads one code or sticks, behind which the force limit would be
+    blind, is refused; False for a recorded run's tare (``mkm reprocess``), whose offset is
+    taken again whatever the cell did after it.
 
     Returns ``offset_V`` (mean), ``std_V``, ``n``, ``std_N``, ``shift_N`` (offset minus the
     configured ``loadcell.offset_V``, in newtons), ``drift_N`` (the forces' straight-line trend,
@@ -148,6 +154,9 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
     if not np.isfinite(v).all():
         raise TareInvalid(f"tare invalid: {int((~np.isfinite(v)).sum())} of {v.size} load-cell "
                           "samples are not numbers (a broken input)")
+    step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
+    if pressure_to_follow and v.max() == v.min():
+        raise TareInvalid(one_code_refusal(float(v[0]), v.size, config))
     offset, std = float(v.mean()), float(v.std(ddof=1))
     std_N = std * cell.sensitivity_N_per_V
     shift_N = (offset - cell.offset_V) * cell.sensitivity_N_per_V
@@ -162,8 +171,7 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
                           "calibration)")
     _, intervals, stray_V = held_tail(v)
     held_s = intervals / config.daq.sample_rate_hz
-    step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
-    if stray_V > step_V and held_s >= STUCK_CELL_S - 1e-9:
+    if pressure_to_follow and stray_V > step_V and held_s >= STUCK_CELL_S - 1e-9:
         raise TareInvalid(f"tare invalid: the load cell read {v[-1]:.4f} V unchanged for the "
                           f"last {held_s:.1f} s of the tare, where it strayed "
                           f"{stray_V * cell.sensitivity_N_per_V:.2f} N before: a stuck or "
@@ -172,7 +180,52 @@ def validate_tare(cell_V, config: BenchConfig) -> dict:
     drift_N, at_rest = _tare_drift(v * cell.sensitivity_N_per_V, config)
     return {"offset_V": offset, "std_V": std, "n": int(v.size), "std_N": std_N,
             "shift_N": shift_N, "config_offset_V": cell.offset_V, "drift_N": drift_N,
-            "at_rest": at_rest, "held_s": held_s}
+            "at_rest": at_rest, "held_s": held_s, "stray_V": stray_V}
+
+
+#: a live load cell's tare is refused as one on a single ADC code at most this often, for a cell
+#: as noisy as :func:`one_code_noise_V` says (a tare again costs seconds; a stuck cell passed,
+#: the force limit is blind)
+ONE_CODE_ODDS = 1e-3
+
+
+def one_code_noise_V(n: int, step_V: float, odds: float = ONE_CODE_ODDS) -> float:
+    """The rms noise [V] from which a live cell's ``n`` readings all lie on one ADC code of
+    ``step_V`` with probability at most ``odds``.
+
+    With Gaussian noise of spread sigma, a reading falls on a code with probability ``p_k``,
+    the largest ``2 Phi(step / 2 sigma) - 1`` (the cell's mean at the code's centre); all ``n``
+    on one code has probability ``sum p_k^n <= max p_k^(n - 1)``. So sigma at which that bound
+    is ``odds``: 0.40 mV (a third of the USB-6001's 1.22 mV step) over 50 readings, 0.59 mV
+    over 20."""
+    p = odds ** (1.0 / (n - 1))
+    return step_V / (2.0 * NormalDist().inv_cdf((1.0 + p) / 2.0))
+
+
+def one_code_refusal(cell_V: float, n: int, config: BenchConfig) -> str:
+    """Why a tare whose ``n`` load-cell readings all read ``cell_V`` [V] is refused: a stuck,
+    disconnected or railed cell reads so, and the force limit is blind behind it (neither the
+    force nor the stuck-cell interlock can tell it from a slack muscle)."""
+    cell = config.loadcell
+    caps = backends.entry(config.daq.backend).capabilities
+    step_V = caps.ai_lsb_V
+    quiet_V = one_code_noise_V(n, step_V)
+    rail = (f", at the input's {math.copysign(caps.ai_range_V, cell_V):+g} V rail"
+            if abs(cell_V) >= caps.ai_range_V - 2 * step_V else "")
+    return (f"tare invalid: the load cell read one ADC code, {cell_V:.4f} V "
+            f"({float(cell.force_N(cell_V)):+.1f} N at loadcell.offset_V={cell.offset_V:g} V"
+            f"{rail}), all {n} times: a stuck, disconnected or railed cell reads so, and the "
+            "force limit is blind behind it; a live cell's noise moves it (one spreading "
+            f"{quiet_V * 1e3:.2f} mV rms or more, {_share(quiet_V / step_V)} the "
+            f"{step_V * 1e3:.2f} mV step, shows two codes in all but one tare of {n} readings "
+            f"in {1 / ONE_CODE_ODDS:,.0f}); check the cell's cable, amplifier and supply, and "
+            "load it by hand to see its reading move (a live cell quieter than that: lengthen "
+            "sequence.tare_s); nothing was pressurised")
+
+
+def _share(ratio: float) -> str:
+    """``ratio`` of a whole in words: "0.49 of", "399 times"."""
+    return f"{ratio:.2g} of" if ratio < 1 else f"{ratio:.3g} times"
 
 
 def held_tail(cell_V) -> tuple[float, int, float]:
@@ -224,19 +277,26 @@ def rest_warning(tare: dict, config: BenchConfig) -> str:
 
 
 def one_code_warning(tare: dict, config: BenchConfig) -> str:
-    """What a tare whose load-cell readings all lay on one ADC code, or whose last
-    :data:`mkm.bench.worker.STUCK_CELL_S` did (``held_s``) after readings that strayed less than
-    a step (else :func:`validate_tare` refuses it), means, or "": a stuck or disconnected cell
-    reads so, and the force limit is blind behind it (the stuck-cell interlock needs a tare that
-    strays); a cell quieter than one step reads so too."""
+    """What a tare whose last :data:`mkm.bench.worker.STUCK_CELL_S` lay on one ADC code
+    (``held_s``) after readings that strayed less than a step (else :func:`validate_tare`
+    refuses it, as it refuses a tare all on one code) means: a stuck or disconnected cell reads
+    so, and the force limit is blind behind it (the stuck-cell interlock needs a tare that
+    strays); a cell quieter than one step reads so too. Else what a tare whose readings strayed
+    less than a step (``stray_V``) means: that interlock is off for the run. Or ""."""
     step_V = backends.entry(config.daq.backend).capabilities.ai_lsb_V
-    one = not tare["std_V"] > 1e-6 * step_V  # one code's spread is the mean's rounding
     held_s = tare.get("held_s", 0.0)
-    if not one and not held_s >= STUCK_CELL_S - 1e-9:
-        return ""
     step_mV = step_V * 1e3
-    read = (f"on one ADC code ({tare['offset_V']:.4f} V) all {tare['n']} times" if one else
-            f"on one ADC code for its last {held_s:.1f} s, where it strayed less than a step "
+    if not held_s >= STUCK_CELL_S - 1e-9:
+        stray_V = tare.get("stray_V", math.inf)
+        if stray_V > step_V:
+            return ""
+        cell = config.loadcell
+        return (f"the load cell spreads {stray_V * 1e3:.2f} mV rms at 0 bar "
+                f"({stray_V * cell.sensitivity_N_per_V:.2f} N), less than one ADC step "
+                f"({step_mV:.2f} mV): the stuck-cell interlock cannot tell it stuck from quiet "
+                "and is off for this run, so a cell that sticks is found only at the run's end, "
+                "the force limit blind meanwhile")
+    read = (f"on one ADC code for its last {held_s:.1f} s, where it strayed less than a step "
             "before")
     return (f"the tare read the load cell {read}: a stuck or disconnected cell reads so, and "
             f"hides every force from the force limit; a cell quieter than one step "

@@ -8,10 +8,10 @@ goes, :class:`StopSignals` handles:
 - a second ``SIGINT``, ``SIGTERM`` (kill, service stop), ``SIGHUP`` (terminal or SSH session
   closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows), and every other signal that would end
   the process while it keeps its default action (:data:`ENDING_SIGNAL_NAMES`: ``SIGQUIT`` from
-  Ctrl-\\, ``SIGUSR1``, ``SIGALRM``, ``SIGXCPU``, ...; POSIX): raise :class:`StopSignal` at
-  once, which unwinds to the run's shutdown: vent, close the device, record. The exit status
-  is 128 + N. Once it is raised, a further signal is only noted (the run's reason names it):
-  nothing cuts the vent or the record;
+  Ctrl-\\, ``SIGUSR1``, ``SIGALRM``, ``SIGXCPU``, ...; POSIX; and :data:`REALTIME_SIGNALS`):
+  raise :class:`StopSignal` at once, which unwinds to the run's shutdown: vent, close the
+  device, record. The exit status is 128 + N. Once it is raised, a further signal is only
+  noted (the run's reason names it): nothing cuts the vent or the record;
 - ``SIGTSTP`` (Ctrl-Z; POSIX) is refused and said (:data:`SUSPEND_SIGNAL`): a suspended run
   would hold its pressure with no interlock watching; ``SIGTTOU`` and ``SIGTTIN``, which stop a
   run in the background that writes to or reads from its terminal, are ignored
@@ -48,7 +48,12 @@ STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(si
 #: signals a Python handler can run after.
 ENDING_SIGNAL_NAMES = ("SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM", "SIGXCPU", "SIGVTALRM",
                        "SIGPROF", "SIGPWR", "SIGSTKFLT", "SIGIO")
-ENDING_SIGNALS = tuple(getattr(signal, n) for n in ENDING_SIGNAL_NAMES if hasattr(signal, n))
+#: the real-time signals (POSIX; Linux: ``kill -s RTMIN+1``), whose default action ends the
+#: process too: stop signals as well
+REALTIME_SIGNALS = (tuple(range(signal.SIGRTMIN, signal.SIGRTMAX + 1))
+                    if hasattr(signal, "SIGRTMIN") else ())
+ENDING_SIGNALS = (*(getattr(signal, n) for n in ENDING_SIGNAL_NAMES if hasattr(signal, n)),
+                  *REALTIME_SIGNALS)
 #: Ctrl-Z (POSIX): a run it suspended would hold its pressure with no interlock watching, for as
 #: long as it stays suspended; refused while a run goes, and said
 SUSPEND_SIGNAL = getattr(signal, "SIGTSTP", None)
@@ -78,12 +83,21 @@ WINDOWS = sys.platform == "win32"
 LINGER = False
 
 
+def signal_name(signum: int) -> str:
+    """The signal's name as ``kill -l`` gives it (``SIGTERM``; ``SIGRTMIN+1`` for a real-time
+    signal, which has none of its own)."""
+    try:
+        return signal.Signals(signum).name
+    except ValueError:
+        return f"SIGRTMIN+{signum - signal.SIGRTMIN}"
+
+
 class StopSignal(BaseException):
     """A signal that stops the run at once (a ``BaseException``: nothing may swallow it)."""
 
     def __init__(self, signum: int, detail: str = ""):
         self.signum = int(signum)
-        self.name = signal.Signals(signum).name
+        self.name = signal_name(signum)
         self.detail = detail
         super().__init__(f"{self.name} ({detail})" if detail else self.name)
 
@@ -167,7 +181,7 @@ class StopSignals:
 
     def _handle(self, signum, frame) -> None:
         if self.stopping:  # a stop is under way: this one cannot cut its vent or its record
-            self.noted.append(signal.Signals(signum).name)
+            self.noted.append(signal_name(signum))
             return
         now = time.monotonic()
         if signum == signal.SIGINT and self.stop_requested_at is None:

@@ -126,12 +126,20 @@ class Acquisition:
         # the load cell's last code [V] and since when it has read it [s], the first sample
         # acquired under a pressure commanded [s], and the highest plausible pressure measured
         # [bar]: a cell on one code from before any pressure to the end, while the muscle was
-        # pressurised, measured nothing (:meth:`one_code_throughout`)
+        # pressurised, measured nothing (:meth:`one_code_throughout`); so did one on one code
+        # from any time to the end while the monitor rose more than the vent threshold: the
+        # lowest plausible reading since the code was first read, and the largest rise since
+        # (rise, from, to) [bar]
         self._same_cell: tuple[float, float] | None = None
+        self._same_low_bar = math.inf
+        self._same_rise = (0.0, math.nan, math.nan)
         self._pressure_from_s: float | None = None
         self.highest_bar = 0.0
         self.command_bar = 0.0
         self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
+        # the highest pressure a write was asked for [bar]: one that failed may still have
+        # reached the device
+        self.asked_bar = 0.0
         # the commands written, by the device's sample clock when each was issued (index, bar),
         # and the command before the oldest kept: the command each sample was acquired under
         self._issued: list[tuple[int, float]] = []
@@ -174,6 +182,8 @@ class Acquisition:
         # the command has been too far from that one for a frozen monitor to pass (see _unmoved)
         self._moved: tuple[float, float] | None = None
         self._unmoved_since_s: float | None = None
+        # the last command it has not moved with since then, and its reading under it [bar]
+        self._unmoved_under = (0.0, 0.0)
         # the monitor moved with a command this run (more than half a change larger than the
         # vent threshold, see _unmoved): its fall after a vent as a step begins is then no
         # output that lost its gain
@@ -340,7 +350,13 @@ class Acquisition:
         pressure = float(reg.monitor_bar(monitor_V)) if self.electronic else self.manometer_bar
         force = (cell_V - self.tare_offset_V) * self.cell.sensitivity_N_per_V
         commanded = self._commanded_at(index) if self.electronic else math.nan
+        if math.isfinite(cell_V) and (self._same_cell is None or self._same_cell[0] != cell_V):
+            self._same_cell = (cell_V, index / self.rate_hz)
+            self._same_low_bar, self._same_rise = math.inf, (0.0, math.nan, math.nan)
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
+            self._same_low_bar = min(self._same_low_bar, pressure)
+            if pressure - self._same_low_bar > self._same_rise[0]:
+                self._same_rise = (pressure - self._same_low_bar, self._same_low_bar, pressure)
             self.measured_bar = pressure
             self.highest_bar = max(self.highest_bar, pressure)
             if phase != "vent":  # the vent check's come after the vent
@@ -348,8 +364,6 @@ class Acquisition:
                 self._recent_command_bar = commanded
                 if commanded > 0:
                     self._pressurised = (pressure, commanded)
-        if math.isfinite(cell_V) and (self._same_cell is None or self._same_cell[0] != cell_V):
-            self._same_cell = (cell_V, index / self.rate_hz)
         if self._pressure_from_s is None and commanded > 0:
             self._pressure_from_s = index / self.rate_hz
         if math.isfinite(force):
@@ -486,6 +500,17 @@ class Acquisition:
         moved_command, moved_bar = self._moved
         change = commanded - moved_command
         if abs(change) <= safety.vent_below_bar:
+            since, (held, last_bar) = self._unmoved_since_s, self._unmoved_under
+            towards_bar = (last_bar - moved_bar) * math.copysign(1.0, held - moved_command)
+            if since is not None and t_s - since >= safety.pressure_follow_s - 1e-9 and \
+                    towards_bar <= safety.pressure_tolerance_bar:
+                # the command came back to the reading before the next sample could judge it
+                # (pre-conditioning's top held as long as pressure_follow_s, then 0 bar): the
+                # monitor had that long under it and did not move (a slow regulator's, moving
+                # more than the tolerance, is the follow interlock's)
+                self._tripped_below(pressure, held)
+                return self._unmoved_said(pressure, held, f"from {since:g} s to {t_s:g} s",
+                                          moved_bar, moved_command)
             self._unmoved_since_s = None
             if commanded == moved_command:  # the reading the next change is judged from
                 self._moved = (commanded, pressure)
@@ -496,16 +521,25 @@ class Acquisition:
             return None
         if self._unmoved_since_s is None:
             self._unmoved_since_s = t_s
-        elif (t_s - self._unmoved_since_s > safety.pressure_follow_s
-              and abs(pressure - commanded) <= safety.pressure_tolerance_bar):
+        self._unmoved_under = (commanded, pressure)
+        if (t_s - self._unmoved_since_s > safety.pressure_follow_s
+                and abs(pressure - commanded) <= safety.pressure_tolerance_bar):
             self._tripped_below(pressure, commanded)
-            return (f"pressure interlock: the monitor does not move with the command: "
-                    f"{pressure:.3f} bar measured against {commanded:g} bar commanded since "
-                    f"{self._unmoved_since_s:g} s, after {moved_bar:.3f} bar under "
-                    f"{moved_command:g} bar (a working regulator's monitor moves more than half "
-                    f"the change within {safety.pressure_follow_s:g} s): a monitor fault "
-                    "(stuck), or a regulator without supply")
+            return self._unmoved_said(pressure, commanded, f"since {self._unmoved_since_s:g} s",
+                                      moved_bar, moved_command)
         return None
+
+    def _unmoved_said(self, pressure: float, commanded: float, span: str, moved_bar: float,
+                      moved_command: float) -> str:
+        """The stuck-monitor interlock's message: ``pressure`` [bar] read against ``commanded``
+        over ``span`` (since when, or from when to when), after ``moved_bar`` under
+        ``moved_command``."""
+        follow_s = self.config.safety.pressure_follow_s
+        return (f"pressure interlock: the monitor does not move with the command: "
+                f"{pressure:.3f} bar measured against {commanded:g} bar commanded {span}, after "
+                f"{moved_bar:.3f} bar under {moved_command:g} bar (a working regulator's monitor "
+                f"moves more than half the change within {follow_s:g} s): a monitor fault "
+                "(stuck), or a regulator without supply")
 
     def _overpressure(self, t_s: float, pressure: float) -> str | None:
         """The over-pressure interlock's message for this measured pressure [bar], or None."""
@@ -595,20 +629,35 @@ class Acquisition:
 
     def one_code_throughout(self) -> str:
         """What a load cell that read one ADC code from before the run's first pressure to
-        its end, while the monitor read a pressure above ``safety.vent_below_bar``, means (its
-        forces measure nothing), or "" (a cell that moved, an electronic regulator never
+        its end, while the monitor read a pressure above ``safety.vent_below_bar``, or from a
+        later time to its end while the monitor rose by more than that, means (its forces
+        from then measure nothing: no muscle that pulls more as its pressure rises, nor one
+        that lets go at the vent, holds a live cell to one code; a slack one with a cell
+        quieter than a step may), or "" (a cell that moved, an electronic regulator never
         commanded, a manual one)."""
-        if self._same_cell is None or self._pressure_from_s is None or \
-                self._same_cell[1] > self._pressure_from_s or \
-                not self.highest_bar > self.config.safety.vent_below_bar:
+        below = self.config.safety.vent_below_bar
+        if self._same_cell is None or self._pressure_from_s is None:
             return ""
-        same = self._same_cell[0]
+        same, since_s = self._same_cell
         step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
             * self.cell.sensitivity_N_per_V
-        return (f"the load cell read one ADC code ({same:.4f} V) from before the first pressure "
-                f"to the end, while the monitor read up to {self.highest_bar:.2f} bar: a stuck or "
-                f"disconnected cell, or a muscle that never pulled one ADC step ({step_N:.2f} "
-                "N); its forces measure nothing, and the force limit was blind")
+        blind = "its forces measure nothing, and the force limit was blind"
+        if since_s <= self._pressure_from_s:
+            if not self.highest_bar > below:
+                return ""
+            return (f"the load cell read one ADC code ({same:.4f} V) from before the first "
+                    f"pressure to the end, while the monitor read up to {self.highest_bar:.2f} "
+                    f"bar: a stuck or disconnected cell, or a muscle that never pulled one ADC "
+                    f"step ({step_N:.2f} N); {blind}")
+        rise, low, high = self._same_rise
+        if not rise > below:
+            return ""
+        force_N = (same - self.tare_offset_V) * self.cell.sensitivity_N_per_V
+        return (f"the load cell read one ADC code ({same:.4f} V, {force_N:+.2f} N) from "
+                f"{since_s:g} s to the end, the vent included, "
+                f"while the monitor rose from {low:.2f} to {high:.2f} bar: a stuck or "
+                f"disconnected cell, or a muscle that pulled not one ADC step ({step_N:.2f} N) "
+                f"more as its pressure rose; from {since_s:g} s {blind}")
 
     def forces_unchanged(self) -> bool:
         """Every force of :meth:`forces_around_vent`'s two windows is the same reading (a load
@@ -650,6 +699,7 @@ class Acquisition:
         clamped = min(max(pressure_bar, 0.0), reg.max_pressure_bar)
         volts = reg.command_volts(clamped)
         ok = self.written = False
+        self.asked_bar = max(self.asked_bar, clamped)
         if self.lease is not None and clamped > 0:
             self._mark(clamped)
         # watched until the device's clock is read after the write (a driver call too)

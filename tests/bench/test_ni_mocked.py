@@ -7,6 +7,7 @@ Run these alone with ``pytest -m mocked_hardware``.
 """
 
 import inspect
+import re
 from importlib.metadata import version
 
 import pytest
@@ -245,6 +246,27 @@ def test_a_pulled_cable_mid_run_asks_for_a_vent_by_hand(config, fake_driver, tmp
     result = acquire(config, backend="ni", out_root=tmp_path)
     assert result.status == "failed" and result.exit_code == 4 and result.manual_vent_required
     assert "vent command failed" in result.reason and "VENT BY HAND" in result.reason
+
+
+def test_a_pulled_cable_at_the_tare_says_no_pressure_was_applied(config, fake_driver, tmp_path,
+                                                                  instant_clock):
+    # the device is gone 10 readings into the 2 s tare, nothing above 0 bar ever commanded,
+    # and stays gone through its reset: the run ended "VENT BY HAND (the regulator may still
+    # hold 0.000977 bar)", exit 4, a muscle never pressurised. It says so, and what it cannot
+    # confirm, exit 1
+    _lost_after(fake_driver, 10)
+    result = acquire(config, backend="ni", out_root=tmp_path)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert not result.manual_vent_required and "VENT BY HAND" not in result.reason
+    assert re.search(r"; no pressure was applied: this run commanded none above 0 bar \(0 bar "
+                     r"was the last command the device took\) and the monitor read at most "
+                     r"0\.00\d bar; its vent could not be confirmed \(the device is gone\); see "
+                     r"that the regulator reads 0 bar before the next run", result.reason), \
+        result.reason
+    assert "resetting the device did not bring it back" in result.reason
+    run = load_run(result.path)
+    assert len(run.samples) == 10 and run.meta.vent_check is None
+    assert max(c.args[3] for c in calls(fake_driver, "write_analog_scalar_f64")) == 0.0
 
 
 def _lost_after(fake_driver, n_reads):

@@ -46,6 +46,21 @@ def test_calibrate_loadcell_refuses_a_mass_beyond_the_cells_capacity(config):
                                                        rel=2e-3)
 
 
+def test_calibrate_loadcell_on_a_stuck_cell_says_so(config):
+    # a cell stuck from the start reads 0.0146 V under 0, 5 and 10 kg: the fit's zero slope was
+    # said as "volts fall as the mass grows (slope 0 V/N): expected a tension load cell wired
+    # with the positive sign", exit 2, as if the wiring were reversed
+    from mkm.bench.backend import BenchError
+
+    stuck = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
+    with pytest.raises(BenchError) as failed:
+        calibrate_loadcell(stuck, [0.0, 5.0, 10.0], seconds=1.0)
+    assert str(failed.value) == (
+        "the load cell read one ADC code, 0.0146 V (+2.9 N at loadcell.offset_V=0 V), under "
+        "every mass (0, 5, 10 kg): a stuck, disconnected or railed cell reads so; check its "
+        "cable, amplifier and supply; nothing was fitted")
+
+
 def test_tare_on_the_sim(config):
     from mkm.bench.sequence import TareInvalid
 
@@ -114,25 +129,44 @@ def test_a_close_that_hangs_ends_the_tare_all_the_same(config, monkeypatch, caps
         "hangs): it is let go as this process ends\n")
 
 
-def test_a_tare_on_one_adc_code_is_said_so(config, tmp_path):
-    # the load cell is stuck from the start: the tare read one code 20 times, its spread 0 N,
-    # and passed without a word (the stuck-cell interlock needs a tare that strays); the run
-    # then recorded one force throughout, the force limit blind. Now the tare says so.
-    from mkm.bench.run import acquire
+def test_a_tare_on_one_adc_code_is_refused(config):
+    # the load cell is stuck from the start: the tare read one code 20 times, its spread 0 N;
+    # it was only warned of, and the run went on with the force limit blind (the stuck-cell
+    # interlock needs a tare that strays), marked failed at its end. `mkm tare` refuses it now
+    from mkm.bench.sequence import TareInvalid, one_code_noise_V
 
     stuck = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
-    out = tare(stuck, seconds=2.0)
-    assert out["std_N"] == pytest.approx(0.0, abs=1e-9)
-    assert out["one_code_warning"] == (
-        f"the tare read the load cell on one ADC code ({out['offset_V']:.4f} V) all 20 times: a "
-        "stuck or disconnected cell reads so, and hides every force from the force limit; a "
-        "cell quieter than one step (1.22 mV) too: load the cell by hand and see its reading "
-        "move before any pressure")
-    assert tare(config, seconds=2.0)["one_code_warning"] == ""  # 2 mV of noise: 1.6 steps
-    notes = []
-    acquire(stuck.replace(sequence={"pressures_bar": (0.5,)}), out_root=tmp_path,
-            notify=notes.append)
-    assert any(n.startswith("warning: the tare read the load cell on one ADC code") for n in notes)
+    with pytest.raises(TareInvalid) as refused:
+        tare(stuck, seconds=2.0)
+    # the code the sim's cell reads at rest: its 0.015 V offset quantised to 12 steps of 1.22 mV
+    assert str(refused.value) == (
+        "tare invalid: the load cell read one ADC code, 0.0146 V (+2.9 N at "
+        "loadcell.offset_V=0 V), all 20 times: a stuck, disconnected or railed cell reads so, "
+        "and the force limit is blind behind it; a live cell's noise moves it (one spreading "
+        "0.59 mV rms or more, 0.49 of the 1.22 mV step, shows two codes in all but one tare of "
+        "20 readings in 1,000); check the cell's cable, amplifier and supply, and load it by "
+        "hand to see its reading move (a live cell quieter than that: lengthen "
+        "sequence.tare_s); nothing was pressurised")
+    assert tare(config, seconds=2.0)["n"] == 20  # 2 mV of noise (1.6 steps): a live cell
+    # the bound: (2 Phi(step / 2 sigma) - 1)^(n - 1) = 1e-3 at sigma = 0.405 mV over 50 readings
+    assert one_code_noise_V(50, 20 / 2 ** 14) == pytest.approx(0.405e-3, abs=1e-6)
+
+
+def test_a_tare_on_one_code_says_a_railed_cell(config):
+    # an amplifier driven to its rail reads the input's top code, +2000 N from the zero: said
+    # as a cell on one code, at the rail (it was refused as a load on the cell, 100 N off)
+    from mkm.bench.sequence import TareInvalid, validate_tare
+
+    top = 10.0 - 20 / 2 ** 14
+    with pytest.raises(TareInvalid, match=r"^tare invalid: the load cell read one ADC code, "
+                                          r"9\.9988 V \(\+1961\.1 N at loadcell\.offset_V=0 V, "
+                                          r"at the input's \+10 V rail\), all 50 times: "):
+        validate_tare([top] * 50, config)
+    # two readings alike prove little: a live cell as noisy as 487 mV rms reads so once in 1,000
+    with pytest.raises(TareInvalid, match=r"one spreading 486\.99 mV rms or more, 399 times the "
+                                          r"1\.22 mV step, shows two codes in all but one tare "
+                                          r"of 2 readings in 1,000\)"):
+        validate_tare([0.0] * 2, config.replace(safety={"tare_min_samples": 2}))
 
 
 def test_check_lists_device_steps_and_duration(config):

@@ -123,3 +123,29 @@ def test_a_reprocessed_run_hashes_the_configuration_it_applied(config, source, t
     assert recorded["config_source"].endswith(f" + {toml}")
     assert recorded["config_sha256"] == file_sha256(toml)
     assert recorded["config_overrides"] == {}
+
+
+def test_a_tare_the_new_settings_refuse_is_said_in_one_line(config, source, tmp_path, capsys):
+    # the run's tare spreads 0.4 N (2 mV of noise); a configuration allowing 0.1 N refuses it:
+    # `mkm reprocess` ended in a traceback of TareInvalid, exit 1
+    toml = tmp_path / "tight.toml"
+    toml.write_text(config.text.replace("tare_max_std_N = 5.0", "tare_max_std_N = 0.1"))
+    assert main(["reprocess", str(source.path), "--config", str(toml), "--out",
+                 str(tmp_path / "new")]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"mkm reprocess: error: run {source.path}: its tare is invalid with "
+                          "these settings (the load cell spreads 0.")
+    assert err.endswith(" N rms at 0 bar, above safety.tare_max_std_N=0.1 (a loose wire, "
+                        "vibration, or a load on the cell)): nothing reprocessed\n")
+    assert not (tmp_path / "new").exists()
+
+
+def test_a_recorded_tare_on_one_code_is_reprocessed(config, tmp_path):
+    # the checks of a cell stuck in the tare guard the pressure to come; a recorded run's tare
+    # is its offset whatever the cell did after it: a tare on one ADC code is taken again
+    stuck = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
+    run = load_run(acquire(stuck, out_root=tmp_path / "runs", notify=lambda m: None).path)
+    assert run.meta.status == "failed" and "one ADC code" in run.meta.reason
+    out = load_run(reprocess(run.path, config, tmp_path / "new"))
+    assert out.meta.tare["offset_V"] == pytest.approx(run.samples["loadcell_V"].iloc[0])
+    assert out.meta.tare["std_V"] == 0.0

@@ -170,6 +170,60 @@ def test_fault_disconnect(config, tmp_path):
     assert last["purpose"] == "vent" and not last["ok"]
 
 
+def test_fault_disconnect_at_the_tare_applied_no_pressure(config, tmp_path):
+    # lost at 1 s of the 2 s tare, nothing above 0 bar ever commanded: VENT BY HAND (the
+    # regulator may still hold 0.000977 bar), exit 4. No pressure was applied, and the vent
+    # after the loss is not confirmed: said so, exit 1, the bench marker let go
+    from mkm.bench.unvented import bench_folder
+
+    result, run = record(config, tmp_path, disconnect_at_s=1.0)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert not result.manual_vent_required and "VENT BY HAND" not in result.reason
+    assert ("; no pressure was applied: this run commanded none above 0 bar (0 bar was the last "
+            "command the device took) and the monitor read at most 0.00") in result.reason
+    assert ("bar; its vent could not be confirmed (DaqDisconnected: simulated disconnect at 1 s); "
+            "see that the regulator reads 0 bar before the next run") in result.reason
+    assert len(run.samples) == 10 and run.meta.vent_check is None
+    assert not list(bench_folder("sim-Dev1").glob("*.json"))
+    # once a pressure was commanded (the 0.5 bar step from 2 s), the loss still asks for it
+    pressurised, _ = record(config, tmp_path, disconnect_at_s=3.0)
+    assert pressurised.exit_code == 4 and pressurised.reason.endswith(
+        "VENT BY HAND (the regulator may still hold 0.5 bar)")
+
+
+def test_fault_disconnect_at_the_open_applied_no_pressure(config, tmp_path):
+    # lost before the open's vent: no run folder, and "VENT BY HAND (the regulator may still
+    # hold 0 bar)", exit 4, of a run that wrote nothing to the device
+    from mkm.bench.run import acquire
+
+    c = config.replace(sim={"faults": {"disconnect_at_s": 0.0}})
+    result = acquire(c, out_root=tmp_path, notify=lambda m: None)
+    assert result.path is None and result.exit_code == 1, result.reason
+    assert "VENT BY HAND" not in result.reason and (
+        "; no pressure was applied: this run wrote nothing to the device, not even the vent "
+        "(its open failed), so the regulator holds what it held before (no run on this bench "
+        "is marked as having left a pressure); see that the regulator reads 0 bar before the "
+        "next run") in result.reason
+
+
+def test_fault_monitor_lost_at_the_tare_applied_no_pressure(config, tmp_path):
+    # the monitor's wire off (0 V) 1 s into the tare, nothing above 0 bar ever commanded: the
+    # pressure interlock vented, and the check that cannot read the monitor asked for a VENT BY
+    # HAND (the regulator may still hold 0.000977 bar), exit 4
+    result, run = record(config, tmp_path, monitor_lost_at_s=1.0)
+    assert result.status == "aborted" and result.exit_code == 1, result.reason
+    assert not result.manual_vent_required and "VENT BY HAND" not in result.reason
+    assert result.reason.endswith(
+        "; no pressure was applied: this run commanded none above 0 bar (0 bar was the last "
+        "command the device took) and the monitor read at most 0.001 bar; its vent could not be "
+        "confirmed (monitor fault: the monitor reads 0.000 V, outside its 1-5 V output (below "
+        "0.9 V: regulator unpowered or wire off)); see that the regulator reads 0 bar before "
+        "the next run")
+    # lost once a pressure was commanded (at 3 s, the 0.5 bar step): still a vent by hand
+    pressurised, _ = record(config, tmp_path, monitor_lost_at_s=3.0)
+    assert pressurised.exit_code == 4 and "VENT BY HAND" in pressurised.reason
+
+
 def test_fault_one_read_timeout_is_retried(config, tmp_path):
     # at 1 s, in the tare at 0 bar: retried (pressurised, it vents: test_failsafe)
     result, run = record(config, tmp_path, read_timeout_at_s=1.0)

@@ -317,6 +317,38 @@ def test_a_monitor_frozen_within_the_tolerance_of_its_step_verifies_no_vent(conf
     assert json.loads(marker.read_text())["unfollowed_bar"] == 0.12
 
 
+def test_a_monitor_frozen_at_zero_is_caught_as_pre_conditioning_leaves_its_top(config,
+                                                                               tmp_path):
+    # Frozen at 0 bar: pre-conditioning held 1 bar from 2 s for exactly pressure_follow_s (5 s)
+    # and went back to 0 bar, which the frozen reading matches, before any sample was 5 s past
+    # the command: neither interlock tripped, and the run went on to trip 5 s into its first
+    # step (at 17 s). The command's return judges the monitor on the time it had: 7 s.
+    c = config.replace(sequence={"preconditioning_cycles": 1},
+                       sim={"truth": {"monitor_stuck_bar": 0.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    assert re.match(r"pressure interlock: the monitor does not move with the command: "
+                    r"0\.00\d bar measured against 1 bar commanded from 2 s to 7 s, after "
+                    r"0\.00\d bar under 0 bar \(a working regulator's monitor moves more than "
+                    r"half the change within 5 s\): a monitor fault \(stuck\), or a regulator "
+                    r"without supply; vented; ", result.reason), result.reason
+    run = load_run(result.path)
+    tripped = run.samples[run.samples["flags"].str.contains("interlock")]
+    assert tripped["time_s"].iloc[0] == pytest.approx(7.0) and (run.samples["step"] < 0).all()
+    assert run.meta.vent_check["unfollowed_bar"] == 1.0  # its reading verifies no vent
+    assert result.reason.endswith("VENT BY HAND (the regulator may still hold 1 bar)")
+    # a working monitor under the same pre-conditioning: no fault
+    assert acquire(config.replace(sequence={"preconditioning_cycles": 1}), out_root=tmp_path,
+                   **QUIET).status == "complete"
+    # a regulator of time constant 8 s moves its monitor 0.46 bar of the 1 bar in those 5 s,
+    # less than half, more than the tolerance: moving, so no monitor fault; it is too slow for
+    # the follow interlock on its way back down instead
+    slow = acquire(config.replace(sequence={"preconditioning_cycles": 1},
+                                  sim={"regulator_tau_s": 8.0}), out_root=tmp_path, **QUIET)
+    assert slow.reason.startswith("pressure interlock: the regulator does not follow: "), \
+        slow.reason
+
+
 @pytest.mark.parametrize("truth", [{}, {"monitor_gain": 0.9, "monitor_offset_bar": -0.04,
                                         "monitor_hysteresis_bar": 0.1}])
 def test_a_monitor_that_moves_with_small_steps_is_no_monitor_fault(config, tmp_path, truth):
@@ -662,14 +694,34 @@ def test_a_load_cell_stuck_early_in_the_tare_is_no_tare_either(config, tmp_path)
     assert max(volts for _, volts in backend.commands) == 0.0
 
 
-def test_a_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_run(config,
-                                                                               tmp_path):
-    # Stuck from the start: the tare on one code is said (a cell quieter than a step reads so
-    # too) and the run goes on, the stuck-cell interlock disarmed; it then recorded one force
-    # at every step up to 1.0 bar and ended complete, exit 0, for identify and the report to
-    # use. A cell that never left its code from before the first pressure to the end, with the
-    # muscle pressurised, measured nothing: all steps done, failed, exit 1, with why.
+def test_a_load_cell_on_one_code_at_the_tare_stops_the_run_before_any_pressure(config,
+                                                                                tmp_path):
+    # Stuck from the start: the tare on one code was only warned of, and the run went on, the
+    # stuck-cell interlock disarmed: 1.0 bar into the muscle with the force limit blind, the
+    # run marked failed only at its end. The tare refuses it: nothing pressurised, the
+    # regulator vented and verified, every sample kept, run.json saying why.
     c = config.replace(sim={"faults": {"loadcell_stuck_at_s": 0.0}})
+    backend = SimBackend(c)
+    result = BenchRun(c, backend, tmp_path, handle_signals=False, **QUIET).execute()
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert re.fullmatch(r"TareInvalid: tare invalid: the load cell read one ADC code, 0\.0146 V "
+                        r"\(\+2\.9 N at loadcell\.offset_V=0 V\), all 20 times: a stuck, .*"
+                        r"; nothing was pressurised", result.reason), result.reason
+    assert max(volts for _, volts in backend.commands) == 0.0
+    run = load_run(result.path)
+    assert run.meta.status == "failed" and run.meta.reason == result.reason
+    assert (run.samples["phase"] == "tare").sum() == 20 and run.meta.vent_check["verified"]
+    assert not result.manual_vent_required and not list(bench_folder("sim-Dev1").glob("*.json"))
+
+
+def test_a_quiet_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_run(config,
+                                                                                     tmp_path):
+    # A cell quieter than a step (0.3 mV rms) that sticks 1.5 s into a 2 s tare: its tare shows
+    # two codes, strays less than a step (the stuck-cell interlock stays disarmed) and holds
+    # its code only 0.5 s, so it passes. It recorded one force at every step up to 1.0 bar and
+    # ended complete, exit 0. A cell that never left its code from before the first pressure to
+    # the end, with the muscle pressurised, measured nothing: all steps done, failed, exit 1.
+    c = config.replace(sim={"noise_V": 0.0003, "faults": {"loadcell_stuck_at_s": 1.5}})
     result = acquire(c, out_root=tmp_path, **QUIET)
     assert result.status == "failed" and result.exit_code == 1, result.reason
     assert re.fullmatch(r"all 3 steps done, but the load cell read one ADC code \(0\.0[0-9]+ V\) "
@@ -678,7 +730,56 @@ def test_a_load_cell_on_one_code_from_the_tare_to_the_end_is_no_complete_run(con
                         r"pulled one ADC step \(0\.24 N\); its forces measure nothing, and the "
                         r"force limit was blind", result.reason), result.reason
     run = load_run(result.path)
+    assert run.samples.query("phase == 'tare'")["loadcell_V"].nunique() == 2
     assert run.steps["force_N_mean"].nunique() == 1 and run.meta.vent_check["verified"]
+
+
+def test_a_quiet_load_cell_stuck_mid_run_under_a_slack_muscle_is_no_complete_run(config,
+                                                                                   tmp_path):
+    # 0.8 mV rms of noise: the tare spreads 0.72 mV, less than the 1.22 mV step, so the
+    # stuck-cell interlock stays disarmed. Stuck at 4 s, in the 0.25 bar step at eps 0.18 (the
+    # muscle slack), it read -0.04 N at 1.5 bar, where the muscle pulls 82 N: the run ended
+    # complete, exit 0, the force limit blind through 1.5 bar. A code held from a time to the
+    # end, the vent included, while the monitor rose more than vent_below_bar: failed, exit 1.
+    c = config.replace(muscle={"eps": 0.18}, sequence={"pressures_bar": (0.25, 1.5)},
+                       sim={"noise_V": 0.0008})
+    live = acquire(c, out_root=tmp_path, **QUIET)
+    assert live.status == "complete", live.reason
+    assert load_run(live.path).steps["force_N_mean"].iloc[1] == pytest.approx(82, abs=2)
+    notes: list[str] = []
+    stuck = acquire(c.replace(sim={"faults": {"loadcell_stuck_at_s": 4.0}}), out_root=tmp_path,
+                    notify=notes.append)
+    assert stuck.status == "failed" and stuck.exit_code == 1, stuck.reason
+    # said at the tare, before any pressure: the interlock is off
+    assert re.fullmatch(r"warning: the load cell spreads 0\.[67]\d mV rms at 0 bar \(0\.1\d N\), "
+                        r"less than one ADC step \(1\.22 mV\): the stuck-cell interlock cannot "
+                        r"tell it stuck from quiet and is off for this run, so a cell that "
+                        r"sticks is found only at the run's end, the force limit blind meanwhile",
+                        notes[1]), notes
+    assert stuck.reason == (
+        "all 3 steps done, but the load cell read one ADC code (0.0146 V, -0.04 N) from 3.8 s "
+        "to the end, the vent included, while the monitor rose from 0.25 to 1.50 bar: a stuck "
+        "or disconnected cell, or a muscle that pulled not one ADC step (0.24 N) more as its "
+        "pressure rose; from 3.8 s its forces measure nothing, and the force limit was blind")
+    run = load_run(stuck.path)
+    assert run.meta.tare["std_V"] < 20 / 2 ** 14  # the interlock disarmed: less than a step
+    assert run.steps["force_N_mean"].nunique() == 1
+
+
+def test_a_quiet_load_cell_stuck_under_a_pulling_muscle_is_named_by_the_vent_check(config,
+                                                                                     tmp_path):
+    # the same quiet cell stuck at 6 s, at 184.6 N in the 0.5 bar step: the vent check read the
+    # monitor fall from 0.5 bar and the cell hold 184.6 N, and said "a muscle that still pulls
+    # ..., and so does a slack one on a load-cell zero moved 184.6 N since the tare", doubting
+    # the monitor too. A cell that held its code while the monitor rose is named as stuck
+    c = config.replace(sim={"noise_V": 0.0008, "faults": {"loadcell_stuck_at_s": 6.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    assert ("the vent could not be verified (the monitor read 0.500 bar before the vent and "
+            "0.003 bar after it, but the load cell read 184.6 N throughout, every reading the "
+            "same where it strayed 0.14 N at the tare: a load cell that does not change while "
+            "the pressure falls is stuck or disconnected") in result.reason, result.reason
+    assert load_run(result.path).meta.vent_check["doubted"] == "the load cell"
 
 
 def test_a_load_cell_stuck_late_in_the_tare_trips_two_seconds_after_it_stuck(config,

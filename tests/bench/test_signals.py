@@ -395,16 +395,20 @@ def test_a_signal_during_the_devices_open_is_held_until_the_open_ends(config, tm
 
 
 @pytest.mark.skipif(not hasattr(signal, "SIGQUIT"), reason="POSIX signals")
-@pytest.mark.parametrize("name", ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGXCPU"])
+@pytest.mark.parametrize("name", ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGXCPU", "SIGRTMIN+1"])
 def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path, name):
-    # Ctrl-\ (SIGQUIT), or a SIGUSR1, SIGUSR2, SIGXCPU (ulimit -t) sent mid-step: their
-    # default action ended the process at once, the regulator holding the step's pressure
-    # (the AO keeps its last value), run.json "running", the block in hand lost. Each is a
-    # stop signal: vented at once, recorded with it, exit 128 + N.
+    # Ctrl-\ (SIGQUIT), or a SIGUSR1, SIGUSR2, SIGXCPU (ulimit -t), a real-time signal
+    # (`kill -s RTMIN+1`) sent mid-step: their default action ended the process at once, the
+    # regulator holding the step's pressure (the AO keeps its last value), run.json
+    # "running", the block in hand lost. Each is a stop signal: vented at once, recorded with
+    # it, exit 128 + N.
     from mkm.bench.run import BenchRun
     from mkm.bench.sim import SimBackend
 
-    signum = getattr(signal, name)
+    if name.startswith("SIGRTMIN+") and not hasattr(signal, "SIGRTMIN"):
+        pytest.skip("no real-time signals on this platform")
+    signum = (signal.SIGRTMIN + int(name.removeprefix("SIGRTMIN+"))
+              if name.startswith("SIGRTMIN+") else getattr(signal, name))
     backend = SimBackend(config)
     original = backend.read
 
