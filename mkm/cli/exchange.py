@@ -26,8 +26,10 @@ EXPORT_EXAMPLE = "example: mkm export mkm-out/demo/runs/<run> --format xlsx --ou
 #: when the muscle's id and size are needed: only mkm export's workbook records them
 EXPORTED = "required unless the table is a workbook written by mkm export, which holds it"
 #: the braid angle and rubber a lab declares: recorded with each run
-DECLARED = ("as the lab declares it, recorded with each run: mkm identify's nominal muscle "
+DECLARED = ("as the lab declares it, recorded with each run: mkm identify's nominal muscle{} "
             "and the report's prediction; default: none declared, the models' calibrated one")
+#: what the rubber's two constants declared together also are
+RUBBER_RATIO = " (with the other constant: the ratio it assumes where it fits the rubber)"
 
 
 def register(subparsers) -> None:
@@ -62,7 +64,8 @@ def register(subparsers) -> None:
                                ("--C01", "C01_MPa", "MPA")):
         imp.add_argument(option, dest=name, metavar=unit,
                          type=argtype(parse_within, option, name),
-                         help=shared_help(option, DECLARED))
+                         help=shared_help(option, DECLARED.format(
+                             "" if option == "--theta0" else RUBBER_RATIO)))
     imp.add_argument("--columns", default=None, metavar="ROLE=COLUMN,...",
                      help="which column holds what, where the names do not say: pressure=..., "
                      "force=..., time=..., direction=..., eps=..., length=..., run=...; "
