@@ -101,6 +101,16 @@ def monitor_zero_warning(tare: dict, config: BenchConfig) -> str:
             "every pressure of this run is read from that zero")
 
 
+def monitor_low_bar(tare: dict) -> float:
+    """How far below 0 bar the monitor reads vented [bar]: its settled zero where more than 3
+    standard errors below 0 (a pressure the over-pressure limit adds to every reading), else
+    0."""
+    mean, se = tare.get("monitor_vented_bar"), tare.get("monitor_vented_se_bar", 0.0)
+    if not tare.get("monitor_vented_settled") or mean is None or not mean < -3.0 * se:
+        return 0.0
+    return -float(mean)
+
+
 class TareInvalid(BenchError):
     """The tare at 0 bar is not usable: the run must not start."""
 
@@ -395,6 +405,7 @@ class Staircase:
         if self.config.regulator.electronic:  # a manual regulator's readings are typed
             tare.update(vented_monitor(monitor))
             check_vented_monitor(tare, self.config)
+            self.acq.monitor_low_bar = monitor_low_bar(tare)
         held_V, intervals, stray_V = held_tail(volts)
         self.acq.set_tare(tare["offset_V"], stray_V)
         self.acq.held_since_tare(held_V, intervals)

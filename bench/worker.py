@@ -21,8 +21,9 @@ disk, :mod:`mkm.bench.recorder` writes behind it):
   with its command (frozen within the tolerance of it): once the command is more than
   ``safety.vent_below_bar`` from the one it last moved with, the reading must move more than
   half that change towards it within ``safety.pressure_follow_s``;
-- over-pressure, on the measured pressure (the monitor's, or the manometer reading the operator
-  typed with a manual regulator) whatever the tolerance: above
+- over-pressure, on the measured pressure (the monitor's, raised by what it read below 0 bar
+  vented at the tare, or the manometer reading the operator typed with a manual regulator)
+  whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
   of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
@@ -122,6 +123,10 @@ class Acquisition:
         # the load cell's spread at the tare [V] (0 before it): above one ADC step, a reading
         # held on one code for STUCK_CELL_S is a stuck cell (_stuck_cell)
         self.tare_std_V = 0.0
+        # how far below 0 bar the monitor read vented at the tare [bar]: every reading is that
+        # much under the pressure the over-pressure limit watches (a reading above 0 vented is
+        # not taken off: the limit is never loosened)
+        self.monitor_low_bar = 0.0
         self._held_cell: tuple[float, float] | None = None  # (the code held [V], since [s])
         # the load cell's last code [V] and since when it has read it [s], the first sample
         # acquired under a pressure commanded [s], and the highest plausible pressure measured
@@ -541,20 +546,27 @@ class Acquisition:
                 f"moves more than half the change within {follow_s:g} s): a monitor fault "
                 "(stuck), or a regulator without supply")
 
-    def _overpressure(self, t_s: float, pressure: float) -> str | None:
-        """The over-pressure interlock's message for this measured pressure [bar], or None."""
+    def _overpressure(self, t_s: float, reading: float) -> str | None:
+        """The over-pressure interlock's message for this monitor ``reading`` [bar] (plus
+        :attr:`monitor_low_bar`), or None."""
         limit = self.config.regulator.max_pressure_bar
         soft, hard = OVERPRESSURE_MARGIN_FRACTION * limit, OVERPRESSURE_HARD_FRACTION * limit
+        pressure = reading + self.monitor_low_bar
+        if self.monitor_low_bar > 0 and math.isfinite(reading):
+            said = (f"{pressure:.3f} bar measured ({reading:.3f} bar read, the monitor reading "
+                    f"{-self.monitor_low_bar:+.4f} bar vented at the tare)")
+        else:
+            said = f"{pressure:.3f} bar measured"
         if not pressure > limit + soft:  # NaN is the non-finite interlock's
             self._over_since_s = None
             return None
         if self._over_since_s is None:
             self._over_since_s = t_s
         if pressure > limit + hard:
-            return (f"over-pressure interlock: {pressure:.3f} bar measured at {t_s:g} s, above "
+            return (f"over-pressure interlock: {said} at {t_s:g} s, above "
                     f"max_pressure_bar {limit:g} + {hard:.3g} bar (regulator overshoot)")
         if t_s - self._over_since_s > OVERPRESSURE_HOLD_S:
-            return (f"over-pressure interlock: {pressure:.3f} bar measured at {t_s:g} s, above "
+            return (f"over-pressure interlock: {said} at {t_s:g} s, above "
                     f"max_pressure_bar {limit:g} + {soft:.3g} bar for more than "
                     f"{OVERPRESSURE_HOLD_S:g} s (regulator overshoot)")
         return None

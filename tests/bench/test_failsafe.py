@@ -813,3 +813,28 @@ def test_a_full_state_folder_as_an_unverified_vent_is_marked_is_said(config, tmp
         in result.reason
     (marker,) = bench_folder("sim-Dev1").glob("*.json")  # still there, naming the run
     assert json.loads(marker.read_text())["run_path"] == str(result.path.resolve())
+
+
+def test_the_over_pressure_limit_watches_the_pressure_a_monitor_reading_low_hides(config,
+                                                                                 tmp_path):
+    # the regulator's sensor, its monitor, reads 0.045 bar low (vented: -0.045 bar, within
+    # vent_below_bar 0.05), so it delivers 2.545 bar at 2.5 commanded, and it overshoots its
+    # command by 0.02: 2.565 bar held, read 2.52, under the 2 % margin (2.55) the limit
+    # watched; the tare's vented reading puts it back
+    c = config.replace(sequence={"pressures_bar": (2.5,)},
+                       sim={"faults": {"overshoot_bar": 0.02},
+                            "truth": {"monitor_offset_bar": -0.045}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    run = load_run(result.path)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert re.search(r"over-pressure interlock: 2\.5[5-9]\d bar measured \(2\.5[0-4]\d bar read, "
+                     r"the monitor reading -0\.04\d\d bar vented at the tare\)", result.reason)
+    assert run.meta.vent_check["verified"]
+    # a monitor reading 0.045 bar high vented is not taken off (the limit is never loosened):
+    # 2.515 bar held under an overshoot of 0.06, read 2.56, trips as read
+    high = config.replace(sequence={"pressures_bar": (2.5,)},
+                          sim={"faults": {"overshoot_bar": 0.06},
+                               "truth": {"monitor_offset_bar": 0.045}})
+    result = acquire(high, out_root=tmp_path / "high", **QUIET)
+    assert result.status == "failed", result.reason
+    assert re.search(r"over-pressure interlock: 2\.5[5-9]\d bar measured at ", result.reason)
