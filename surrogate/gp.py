@@ -132,23 +132,20 @@ def posterior(gp, y_mean: float, y_std: float) -> dict[str, np.ndarray]:
             "y_mean": np.array(y_mean), "y_std": np.array(y_std)}
 
 
-def posterior_mean_std(post, Z, with_std: bool = True):
+def posterior_mean_std(post, Z):
     """Mean and std of the process ``post`` (:func:`posterior`) at ``Z``, in the target's units:
     ``gp.predict(Z, return_std=True)`` without scikit-learn's per-call checks and kernel objects,
     which cost more than the arithmetic for a few points. The posterior of Rasmussen and
     Williams (2006), Algorithm 2.1, with the Matern 5/2 kernel ``a (1 + sqrt5 r + 5 r^2 / 3)
-    exp(-sqrt5 r)``. Without ``with_std`` the std is zeros: the variance's product with the
-    inverse Cholesky factor costs a hundred times the mean, which needs none of it."""
+    exp(-sqrt5 r)``."""
     # Euclidean distances by broadcasting: scipy.spatial's import costs more than a sweep
     d = (np.asarray(Z, dtype=float) / post["length_scale"])[:, None, :] - post["X_scaled"][None]
     r = np.sqrt(5.0) * np.sqrt(np.einsum("ijk,ijk->ij", d, d))
     K = post["amplitude"] * (1.0 + r + r**2 / 3.0) * np.exp(-r)
-    mean = post["y_std"] * (K @ post["alpha"]) + post["y_mean"]
-    if not with_std:
-        return mean, np.zeros_like(mean)
     V = post["L_inv"] @ K.T
     var = np.clip(post["amplitude"] + post["noise"] - np.einsum("ij,ij->j", V, V), 0.0, None)
-    return mean, np.sqrt(var) * post["y_std"]
+    return (post["y_std"] * (K @ post["alpha"]) + post["y_mean"],
+            np.sqrt(var) * post["y_std"])
 
 
 def predict_mean_std(gp, post, Z):

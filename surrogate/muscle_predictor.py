@@ -47,14 +47,12 @@ def process_inputs(zs, inputs):
     return slope, zs[:, :-1]
 
 
-def log_k(X, inputs, fixed, z_mean, z_scale, slope, threshold, with_std: bool = True):
+def log_k(X, inputs, fixed, z_mean, z_scale, slope, threshold):
     """Muscle values, then mean and (uncalibrated) std of ``log k_A`` and ``log k_P`` from the
-    posteriors ``slope`` and ``threshold`` over ``z`` standardised with ``z_mean, z_scale``
-    (without ``with_std``: zeros)."""
+    posteriors ``slope`` and ``threshold`` over ``z`` standardised with ``z_mean, z_scale``."""
     v, z = muscle_values(X, inputs, fixed)
     z_slope, z_threshold = process_inputs((z - z_mean) / z_scale, inputs)
-    return (v, *posterior_mean_std(slope, z_slope, with_std),
-            *posterior_mean_std(threshold, z_threshold, with_std))
+    return (v, *posterior_mean_std(slope, z_slope), *posterior_mean_std(threshold, z_threshold))
 
 
 def calibrated_factor(m_A, c, beta, reference):
@@ -167,11 +165,10 @@ class MusclePredictor:
         """``(A, sd_A, P*, sd_P*)`` per row of a validated ``X``."""
         return self._parts(X)[:4]
 
-    def _parts(self, X, with_std: bool = True):
-        """:meth:`decompose`, then the effective shortening of the slope ``k_A eps`` (without
-        ``with_std``: the stds zeros)."""
+    def _parts(self, X):
+        """:meth:`decompose`, then the effective shortening of the slope ``k_A eps``."""
         v, m_A, s_A, m_P, s_P = log_k(X, self.inputs, self.fixed, self.z_mean, self.z_scale,
-                                      self.slope, self.threshold, with_std)
+                                      self.slope, self.threshold)
         factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
         return (*from_log_k(v, m_A, factor * s_A, m_P, factor * s_P),
                 effective_shortening(v, m_A))
@@ -185,18 +182,18 @@ class MusclePredictor:
         theta0 = columns_of(X, self.inputs, self.fixed)["theta0_deg"]
         return force, np.sqrt(var + floor**2), shortening, theta0
 
-    def _per_muscle(self, X, with_std: bool = True):
+    def _per_muscle(self, X):
         """:meth:`_parts` once per muscle of ``X``, per row."""
         # a sweep is many pressures of a few muscles
         Z = np.ascontiguousarray(X[:, 1:])
         keys = Z.view(np.dtype((np.void, Z.dtype.itemsize * Z.shape[1]))).ravel()
         _, first, which = np.unique(keys, return_index=True, return_inverse=True)
-        return tuple(part[which] for part in self._parts(X[first], with_std))
+        return tuple(part[which] for part in self._parts(X[first]))
 
     def predict(self, X, return_std: bool = False):
         """Force [N] (and std [N]) at the rows of a validated float ``X``."""
         if not return_std:
-            A, _, Pstar, _, _ = self._per_muscle(X, with_std=False)
+            A, _, Pstar, _, _ = self._per_muscle(X)
             return A * np.maximum(X[:, 0] - Pstar, 0.0)
         force, std, shortening, theta0 = self.std_parts(X)
         return force, std * rescale_factor(shortening, theta0, self.std_rescale,

@@ -52,16 +52,15 @@ def range_muscle_values(X, inputs, fixed):
 class RangePredictor(MusclePredictor):
     """:class:`~mkm.surrogate.muscle_predictor.MusclePredictor` on :func:`range_muscle_values`."""
 
-    def log_k(self, X, with_std: bool = True):
-        """Muscle values, then mean and (uncalibrated) std of ``log k_A`` and ``log k_P``
-        (without ``with_std``: zeros)."""
+    def log_k(self, X):
+        """Muscle values, then mean and (uncalibrated) std of ``log k_A`` and ``log k_P``."""
         v, z = range_muscle_values(X, self.inputs, self.fixed)
         z_slope, z_threshold = process_inputs((z - self.z_mean) / self.z_scale, self.inputs)
-        return (v, *posterior_mean_std(self.slope, z_slope, with_std),
-                *posterior_mean_std(self.threshold, z_threshold, with_std))
+        return (v, *posterior_mean_std(self.slope, z_slope),
+                *posterior_mean_std(self.threshold, z_threshold))
 
-    def _parts(self, X, with_std: bool = True):
-        v, m_A, s_A, m_P, s_P = self.log_k(X, with_std)
+    def _parts(self, X):
+        v, m_A, s_A, m_P, s_P = self.log_k(X)
         factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
         return (*from_log_k(v, m_A, factor * s_A, m_P, factor * s_P),
                 effective_shortening(v, m_A))
