@@ -970,7 +970,7 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     if header_index > 0 and _units_row(header):
         # a logger's two header rows, names over units ("Druck" over "kPa"): one header
         names = [str(c).strip() for c in rows[header_index - 1]] + [""] * width
-        header = [f"{n} [{u.strip('[]() ')}]" if n and u.strip("[]() ") else n or u
+        header = [_named_with_unit(where, numbers[header_index], n, u)
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
     header = _labview_header(header, rows[:header_index])
@@ -983,6 +983,25 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
                     numbers[first_data:end], header_index, separator, decimal,
                     footer_skipped=[f"A{numbers[k]} ({str(rows[k][0]).strip()[:40]!r})"
                                     for k in range(end, len(rows))])
+
+
+def _named_with_unit(where: str, row: int, name: str, unit: str) -> str:
+    """A column's name over its cell of a units row as one header: ``Druck`` over ``kPa`` is
+    ``Druck [kPa]``; a name that holds the same unit keeps it (German Excel's ``Druck [bar]``
+    over ``bar``). ``ValueError`` where the two units differ: which one the column holds
+    cannot be told, and a factor of 10 or 1000 would go unseen."""
+    written = unit.strip("[]() ")
+    if not (name and written):
+        return name or unit
+    in_name = parse_header(name)[1]
+    named, given = (parse_unit(in_name) if in_name else None), parse_unit(written)
+    if named is None or given is None:
+        return f"{name} [{written}]"
+    if str(named) != str(given):
+        raise ValueError(f"{where}, row {row}: column {name!r} names its unit, and the row of "
+                         f"units under the names gives it {written!r}: expected one unit per "
+                         "column; correct the name or the units row")
+    return name
 
 
 def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
