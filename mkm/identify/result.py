@@ -421,8 +421,9 @@ class Identification:
         """The last line a reader sees: whether the identified muscle can be used."""
         g = self.goodness
         if g is None or not g.judged:
-            return ("verdict: not judged (the runs show no noise to judge the fit by): weigh "
-                    "the largest |Err%| above against the instruments' accuracy before using "
+            return ("verdict: not judged (the runs show no noise to judge the fit by): "
+                    f"{PULLS_LATE_FIRST if g is not None and g.pulls_late else ''}weigh the "
+                    "largest |Err%| above against the instruments' accuracy before using "
                     "calibration.json")
         if not g.misfit:
             return (f"verdict: the model follows these runs within their noise (chi2/nu "
@@ -573,12 +574,15 @@ def _first(rubber: dict, goodness) -> str:
     than the fitted model (a rest length or a gap the runs do not declare: a misfit so large
     that the braid or the rubber's ratio, which barely move the threshold, are read from it
     too), else :func:`ratio_first`."""
-    if goodness.pulls_late:
-        return ("first, a run declared at its rest length pulls later than the fitted model "
-                "(the note above): fit its rest length (--params ...,L0) or a gap (--params "
-                "...,gap) and identify again, before reading the braid or the rubber's ratio "
-                "from this fit; then ")
-    return ratio_first(rubber, goodness.ratio_freed)
+    return PULLS_LATE_FIRST if goodness.pulls_late else ratio_first(rubber, goodness.ratio_freed)
+
+
+#: what a verdict says first where a run declared at its rest length pulls later than the
+#: fitted model, judged or not (a table's fit is not, and its threshold misses as far)
+PULLS_LATE_FIRST = ("first, a run declared at its rest length pulls later than the fitted model "
+                    "(the note above): fit its rest length (--params ...,L0) or a gap (--params "
+                    "...,gap) and identify again, before reading the braid or the rubber's "
+                    "ratio from this fit; then ")
 
 
 def ratio_first(rubber: dict, freed: dict | None = None) -> str:

@@ -226,6 +226,21 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
                              ratio_freed=None, pulls_late=False)
     assert "--braid" not in Identification._verdict_line(
         SimpleNamespace(goodness=within, rubber=held))
+    # newuser16: a table's fit is not judged, and the Festo DMSP-20-300's map read at its
+    # table's 296 mm pulls from 0.43 bar, the fit from 0.04: the note said to fit the rest
+    # length, the verdict only to weigh the misses and use calibration.json
+    unjudged = SimpleNamespace(judged=False, misfit=[], pulls_late=True)
+    said = Identification._verdict_line(SimpleNamespace(goodness=unjudged, rubber=held))
+    assert said == ("verdict: not judged (the runs show no noise to judge the fit by): first, a "
+                    "run declared at its rest length pulls later than the fitted model (the "
+                    "note above): fit its rest length (--params ...,L0) or a gap (--params "
+                    "...,gap) and identify again, before reading the braid or the rubber's ratio "
+                    "from this fit; then weigh the largest |Err%| above against the "
+                    "instruments' accuracy before using calibration.json")
+    unjudged.pulls_late = False
+    assert Identification._verdict_line(SimpleNamespace(goodness=unjudged, rubber=held)) == (
+        "verdict: not judged (the runs show no noise to judge the fit by): weigh the largest "
+        "|Err%| above against the instruments' accuracy before using calibration.json")
 
 
 def test_a_creep_time_constant_at_its_search_bound_is_said():
