@@ -1808,6 +1808,40 @@ def test_the_braid_angle_and_rubber_a_lab_declares_are_the_runs_muscle(tmp_path,
     assert code == 2 and err.count("\n") == 1 and "--theta0 90" in err, err
 
 
+def test_the_tolerances_a_lab_declares_are_recorded_with_each_run(tmp_path, mkm_cli):
+    # newuser16: identify on the Festo DMSP-10-250's map said to declare the tube's tolerances
+    # closer ([muscle.tolerances]) and identify again, which a table had no way to: its runs
+    # took the bench's defaults, D0 +-0.3 mm and t0 +-0.1 mm, 3 % of a 10 mm tube
+    from mkm.fem.tolerances import Tolerances
+    from mkm.identify.runs import load_run_data
+
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure_bar": PRESSURES, "force_N": thickwall_N(PRESSURES, 0.122),
+                  "direction": ["up"] * 5 + ["down"] * 2}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122", "--tolerance",
+                        "D0=0.05,t0=0.02")
+    # the names given, the bench's defaults for the others, as [muscle.tolerances] reads
+    declared = Tolerances(D0_mm=0.05, t0_mm=0.02)
+    assert run.meta.muscle.tolerances == declared
+    record = json.loads((run.path / "run.json").read_text(encoding="utf-8"))
+    assert record["calibration"] == {"muscle_tolerances": {
+        "D0_mm": 0.05, "t0_mm": 0.02, "L0_mm": 1.0, "eps": 0.004, "theta0_deg": 1.0,
+        "rubber_fraction": 0.0}}
+    assert load_run_data(run.path).geometry_tolerance_mm == {"D0_mm": 0.05, "t0_mm": 0.02}
+    # without it, none recorded: the defaults
+    (plain,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122")
+    assert plain.meta.calibration == {} and plain.meta.muscle.tolerances == Tolerances()
+    # an export and import keeps them
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), _ = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert again.meta.muscle.tolerances == declared
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0.122", "--tolerance",
+                            "D0=-1"])
+    assert (code, err) == (2, "mkm import: error: argument --tolerance: tolerance D0_mm=-1.0 "
+                              "is invalid: expected a +- bound from 0 to 250\n")
+
+
 def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_path, mkm_cli):
     # a 10 Hz ramp saved without its time by a German Excel (';', decimal commas): its run
     # folder keeps the table (imported_table.csv), its steps are bins; mkm export left the
