@@ -409,7 +409,10 @@ def _text_table(path: Path, text: str) -> RawTable:
 
 
 def _comment(line: str) -> bool:
-    return line.lstrip().startswith("#")
+    """A '#' comment line; not one whose first cell is a spreadsheet's error value (a row of
+    a sheet saved as CSV, said where it is read)."""
+    text = line.lstrip()
+    return text.startswith("#") and not _ERROR_FIRST.match(text)
 
 
 def _with_commented_units(numbered: list[tuple[int, str]], lines: list[tuple[int, str]],
@@ -2010,7 +2013,12 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
                    if formula else
                    f"{_shown(cell)} is the header again, a second record in the file (a "
                    "logger that appended another session): expected one header; split the "
-                   "file there and import each" if again else f"{_shown(cell)} is not a number")
+                   "file there and import each" if again else
+                   f"{_shown(cell)} is a spreadsheet's error value (a formula that failed "
+                   "there: Excel's #VALUE!, #DIV/0!, #REF!, in German #WERT!, #BEZUG!): "
+                   "correct the formula, or delete its row"
+                   if _SPREADSHEET_ERROR.fullmatch(str(cell).strip()) else
+                   f"{_shown(cell)} is not a number")
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
                              f"{column.header!r}): {why}")
         if not math.isfinite(number):
@@ -2419,6 +2427,14 @@ def without_summary_rows(table: RawTable) -> RawTable:
                    summaries_skipped=list(named.values()))
 
 
+#: a spreadsheet's error values, a formula that failed, saved into a CSV as their text: Excel's
+#: in English, German and French (#N/A and #NV, a lookup that found nothing: :data:`NO_READING`)
+SPREADSHEET_ERRORS = ("#VALUE!", "#DIV/0!", "#REF!", "#NAME?", "#NUM!", "#NULL!", "#SPILL!",
+                      "#CALC!", "#N/A", "#WERT!", "#BEZUG!", "#ZAHL!", "#ÜBERLAUF!", "#NV",
+                      "#VALEUR!", "#NOMBRE!", "#NOM?", "#NUL!")
+_SPREADSHEET_ERROR = re.compile("|".join(map(re.escape, SPREADSHEET_ERRORS)), re.IGNORECASE)
+#: a line starting with one, a cell of its own: a row, not a '#' comment
+_ERROR_FIRST = re.compile(rf"(?:{_SPREADSHEET_ERROR.pattern})(?=$|[\s;,|])", re.IGNORECASE)
 #: what a cell reads where a logger or a spreadsheet has no reading: LabVIEW's NaN for a
 #: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none, a
 #: table's n/a or null; and a logger's dashes ('-', '---')

@@ -1012,6 +1012,15 @@ def test_a_workbooks_numbers_stored_as_text_with_decimal_commas(tmp_path):
     ("", "lab.csv is empty"),
     ("P,F\n", "has no row of numbers"),
     ("P,F\n1,2\n1,abc\n", "lab.csv, cell B3 (column 'F'): 'abc' is not a number"),
+    # newuser16: a German Excel sheet's failed formula was 'not a number', the cell's error
+    # not said
+    ("P;F\n1;2\n1;#WERT!\n", "lab.csv, cell B3 (column 'F'): '#WERT!' is a spreadsheet's "
+     "error value (a formula that failed there: Excel's #VALUE!, #DIV/0!, #REF!, in German "
+     "#WERT!, #BEZUG!): correct the formula, or delete its row"),
+    # one in a row's first cell was a '#' comment, the row left out without a word
+    ("P,F\n1,2\n#DIV/0!,3\n2,4\n", "lab.csv, cell A3 (column 'P'): '#DIV/0!' is a "
+     "spreadsheet's error value"),
+    ("P,F\n1,2\n1,#NUM!\n", "'#NUM!' is a spreadsheet's error value"),
     ("P,F\n1,2\n1,nan\n", "lab.csv, cell B3 (column 'F'): 'nan' is not a finite number"),
     ("P,F\n1 bar,2\n150 kPa,2\n", "mixed units in column 'P': 'bar' in cell A2, 'kPa' in cell A3"),
     ("P (bar),F\n1,2\n150 kPa,2\n", "mixed units in column 'P (bar)': 'bar' in the header, "
