@@ -129,6 +129,14 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
     name = f" ({calibration_name})" if calibration_name else ""
     if command is None:
         misfit = (fit or {}).get("misfit") or {}
+        where = "on this run" + (" with the others" if len(identified) > 1 else "")
+        if misfit and not misfit.get("judged"):
+            # a table's fit: no noise to judge it by, so no misfit to blame the distance on
+            return (f"although the calibration{name} was identified {where}: identify could not "
+                    "judge that fit (the runs show no noise to judge it by), and this distance "
+                    "is the identified model's own miss: weigh it against the instruments' "
+                    "accuracy (mkm import --accuracy force=...,pressure=... lets identify and "
+                    "the report judge it)")
         if misfit.get("judged") and not misfit.get("misfit_branches"):
             found = {p.get("parameter"): p.get("value") for p in fit.get("parameters", [])
                      if p.get("status") == "fitted"}
@@ -138,13 +146,14 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
             lacks = (f"the {' and '.join(terms)} identified with it, which these static models "
                      "lack, are that distance" if terms else "these static models lack the "
                      "identified model's friction and creep")
-            return (f"although the calibration{name} was identified on this run with the others "
-                    f"and fits them within their noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
+            fits = "them within their" if len(identified) > 1 else "it within its"
+            return (f"although the calibration{name} was identified {where} and fits {fits} "
+                    f"noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
                     f"{lacks} (add the rung that has them: --models friction,...; identify's "
                     "steps.csv has the steps predicted with them)")
-        return (f"although the calibration{name} was identified on this run with the others: "
-                "the model does not fit them all with one muscle (the identification's misfit "
-                "notes say where)")
+        return (f"although the calibration{name} was identified {where}: the model does not "
+                f"fit {'them all' if len(identified) > 1 else 'it'} with one muscle (the "
+                "identification's misfit notes say where)")
     at = ", ".join(f"{r['muscle']['eps']:g}" for r in identified if "muscle" in r)
     head = (f"which points to the muscle, not the model: the calibration{name}, identified on "
             f"the runs at eps {at}, does not carry over to this run")

@@ -171,9 +171,21 @@ def test_a_calibration_that_fits_its_runs_within_their_noise_is_not_called_a_mis
                                 "misfit_branches": ["r1 loading"]}}
     assert "does not fit them all with one muscle" in muscle_advice(
         "runs/r1", identified, "calibration.json", fit=misfit)
-    # and so is a fit nobody judged (imported tables without their accuracy)
-    assert "does not fit them all" in muscle_advice(
-        "runs/r1", identified, fit={**fit, "misfit": {"judged": False}})
+    # newuser16: a fit nobody judged (imported tables without their accuracy) was called one
+    # too, 'the identification's misfit notes say where', which has none; and a calibration
+    # identified on this run alone was 'identified on this run with the others'
+    unjudged = {**fit, "misfit": {"judged": False}}
+    assert muscle_advice("runs/r1", identified, fit=unjudged) == (
+        "although the calibration was identified on this run with the others: identify could "
+        "not judge that fit (the runs show no noise to judge it by), and this distance is the "
+        "identified model's own miss: weigh it against the instruments' accuracy (mkm import "
+        "--accuracy force=...,pressure=... lets identify and the report judge it)")
+    alone = identified[:1]
+    assert muscle_advice("runs/r1", alone, fit=unjudged).startswith(
+        "although the calibration was identified on this run: identify could not judge")
+    assert muscle_advice("runs/r1", alone, fit=misfit).startswith(
+        "although the calibration was identified on this run: the model does not fit it with "
+        "one muscle")
 
 
 def test_the_identify_it_suggests_takes_every_run_of_the_muscle_at_hand():
