@@ -240,7 +240,8 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     if row is None and any(r["valid_points"] > 0 for r in summary):
         # valid forces without an error: Equation 7 divides by the largest measured force
         return (f"{run_label}: no model can be scored: the run's largest measured force is "
-                "not above 0 N (a slack muscle), and Equation 7's error is relative to it.")
+                "not above 0 N or its steps' uncertainty (a slack muscle), and Equation 7's "
+                "error is relative to it.")
     if row is None:
         return f"{run_label}: no model gives a valid force at any kept step: nothing to use."
     name = names[row["model"]]

@@ -1205,6 +1205,22 @@ def test_a_muscle_that_pulls_nothing_at_its_eps_is_a_warning_from_check_and_acqu
     # at eps 0.25 it pulls, about 10 % of its force at rest at 6 bar: no word
     code, _, err = mkm_cli(["check", "--config", str(tmp_path / "m10.toml"), "--eps", "0.25"])
     assert code == 0 and "pulls at most" not in err
+    # the run: the report scored the models against its largest reading, a tenth of a newton
+    # of noise ('103.85 % off ... points to the muscle: identify it'), and identify called its
+    # fit ready, every interval its search box; neither has a force to go by
+    import pandas as pd
+
+    from mkm.registry import parse_specs
+    from mkm.report import build_report
+
+    build_report([result.path], parse_specs("thickwall"), out_dir=tmp_path / "report",
+                 cache_dir=None, tolerance=None, surrogate_section=False)
+    summary = pd.read_csv(tmp_path / "report" / "summary.csv")
+    assert summary["max_abs_err_pct"].isna().all() and summary["valid_points"].gt(0).all()
+    code, _, err = mkm_cli(["identify", str(result.path), "--model", "thickwall", "--search",
+                            "model", "--out", str(tmp_path / "id")])
+    assert code == 2 and ("every settled force is 0 N or less, or within its uncertainty (a "
+                          "slack muscle)") in err, err
 
 
 # 4. bounded runs ---------------------------------------------------------------------------
