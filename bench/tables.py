@@ -2437,8 +2437,9 @@ _SPREADSHEET_ERROR = re.compile("|".join(map(re.escape, SPREADSHEET_ERRORS)), re
 _ERROR_FIRST = re.compile(rf"(?:{_SPREADSHEET_ERROR.pattern})(?=$|[\s;,|])", re.IGNORECASE)
 #: what a cell reads where a logger or a spreadsheet has no reading: LabVIEW's NaN for a
 #: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none, a
-#: table's n/a or null; and a logger's dashes ('-', '---')
-NO_READING = ("nan", "#n/a", "#nv", "n/a", "null")
+#: table's n/a or null, a German lab sheet's k.A. (keine Angabe) or n.a.; and a logger's dashes
+#: ('-', '---')
+NO_READING = ("nan", "#n/a", "#nv", "n/a", "null", "k.a.", "k. a.", "n.a.")
 _DASHES = re.compile(r"^-+$")
 #: what a logger writes where a channel read beyond its range (OVL, -OVL, OL, Over, Overload,
 #: Overrange, or SCPI's number :data:`SCPI_OVERLOAD`): no reading either, and said apart,
