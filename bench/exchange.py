@@ -29,7 +29,7 @@ import json
 import math
 import re
 import shutil
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -92,6 +92,7 @@ from mkm.fem.limits import PRACTICAL_RANGE, check_value, outside
 
 if TYPE_CHECKING:
     from mkm.bench.budget import Declared
+    from mkm.fem.tolerances import Tolerances
 
 REQUIRED_ROLES = ("pressure", "force")
 #: what to know choosing among columns that each hold a role by their unit
@@ -264,7 +265,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  accuracy: dict[str, Declared] | None = None, force_sign: int = 1,
                  one_step_per_row: bool = False, join: str | Path | None = None,
                  join_shift_s: float | None = None, scaling: dict[str, Scaling] | None = None,
-                 sample_rate_hz: float | None = None,
+                 sample_rate_hz: float | None = None, tolerances: Tolerances | None = None,
                  notify=lambda line: None, bar=None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
@@ -324,6 +325,11 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         a time column, for ``mkm export``'s workbook and with ``join``. A LabChart export
         without its time column is timed so by its header's ``Interval=`` (a rate given must
         agree with it).
+    tolerances : mkm.fem.tolerances.Tolerances, optional
+        The +- tolerances the muscle was made to, recorded with each run as a bench run records
+        its configuration's ``[muscle.tolerances]`` (``calibration.muscle_tolerances``): what
+        ``mkm identify`` draws into its intervals and ``mkm report`` into its bands (default:
+        none recorded, :class:`~mkm.fem.tolerances.Tolerances`' defaults taken).
     notify : callable
         Receives the line of what was recognised in each table.
     bar : optional
@@ -527,6 +533,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     check_out_root(out_root)
     out, muscles = [], [b[0].muscle for b in built]
     for g, (meta, steps, samples, notes, shape) in zip(groups, built, strict=True):
+        if tolerances is not None:
+            meta = replace(meta, muscle=replace(meta.muscle, tolerances=tolerances),
+                           calibration={**meta.calibration,
+                                        "muscle_tolerances": asdict(tolerances)})
         label = _folder_label(meta.muscle, muscles)
         bar.start(f"writing the run folder of {g.state}")
         writer = RunWriter(out_root, meta, f"# imported from {path.name}: no bench "

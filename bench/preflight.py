@@ -11,6 +11,9 @@
   form on the inner diameter ``D0`` is (1 + 2 t0 / D0)^2 lower, 1.7 times on a 5 mm tube with a
   0.8 mm wall. A warning, not a refusal: the interlock protects the cell. So is a cell the
   muscle's largest force uses less than a tenth of (:func:`oversized_warning`);
+- :func:`slack_warning`: whether the muscle pulls at its eps at all up to the highest planned
+  pressure (the thick-wall model's threshold, which Equation 2 has not: a share of its force at
+  its rest length, :data:`SLACK_FRACTION`);
 - :func:`practical_range_warning`: whether the declared muscle or the planned pressures leave the
   practical range, where every model's force is an extrapolation.
 
@@ -117,7 +120,56 @@ def practical_range_warning(config) -> str | None:
             "extrapolation (`mkm models` states the range)")
 
 
+def thickwall_force_N(config, pressure_bar: float, eps: float) -> float:
+    """The thick-wall model's force [N] of the configured muscle at ``pressure_bar`` and
+    ``eps``, at the braid angle the other checks read (:func:`muscle_lock`): a closed form
+    whose wall holds the braid below a threshold pressure, which Equation 2 has not."""
+    from mkm.fem.ladder import make_model  # the models' registry: only where asked
+
+    m = config.muscle
+    model = make_model("thickwall", muscle=m, theta0_deg=muscle_lock(config).theta0_deg)
+    return float(model.predict(float(pressure_bar), m.D0_mm, m.t0_mm, eps).force_N)
+
+
+#: A muscle pulling less than this share of its force at its rest length, at the highest planned
+#: pressure, is slack there: the thick-wall model and the FE model part by about as much near
+#: the threshold (a 10 mm tube with a 1.5 mm wall at eps 0.28 and 6 bar: 1.6 N and none, of
+#: 590 N at eps 0)
+SLACK_FRACTION = 0.01
+
+
+def slack_warning(config) -> str | None:
+    """The message when the muscle at its eps pulls less than :data:`SLACK_FRACTION` of its
+    force at its rest length up to the highest planned pressure, by :func:`thickwall_force_N`
+    (its threshold lies at or above that pressure: every step would read about the load cell's
+    zero), with the largest eps at which it pulls more there, else None. Past the braid lock
+    :func:`braid_lock` says it."""
+    m, top = config.muscle, max(config.sequence.pressures_bar)
+    if braid_lock(config):
+        return None
+    least = SLACK_FRACTION * thickwall_force_N(config, top, 0.0)
+    force = thickwall_force_N(config, top, m.eps)
+    if not force < least:  # a force the model gives none for (NaN) is not said slack
+        return None
+    low, high = 0.0, m.eps
+    if least <= 0.0:
+        reach = "at no eps, not even at its rest length"
+    else:
+        while high - low > 1e-4:  # the largest eps it pulls at, to a tenth of a per mille
+            middle = (low + high) / 2
+            low, high = (middle, high) if thickwall_force_N(config, top, middle) >= least \
+                else (low, middle)
+        reach = f"below eps {low:.3f}"
+    return (f"at eps {m.eps:g} the muscle pulls at most {force:.2g} N up to {top:g} bar, under "
+            f"{100 * SLACK_FRACTION:g} % of the {least / SLACK_FRACTION:.0f} N it pulls at its "
+            "rest length (the thick-wall model, whose wall holds the braid below a threshold "
+            "pressure; Equation 2's forecast above has none): every step would read about the "
+            f"load cell's zero; it pulls more than that at {top:g} bar {reach}, at a higher "
+            "pressure or with a thinner wall")
+
+
 def warnings(config) -> list[str]:
-    """Every preflight message for ``config`` (braid lock, load cell, practical range)."""
-    return [w for w in (braid_lock(config), loadcell_warning(config),
+    """Every preflight message for ``config`` (braid lock, a slack muscle, load cell, practical
+    range)."""
+    return [w for w in (braid_lock(config), slack_warning(config), loadcell_warning(config),
                         practical_range_warning(config)) if w]

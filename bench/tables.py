@@ -409,7 +409,10 @@ def _text_table(path: Path, text: str) -> RawTable:
 
 
 def _comment(line: str) -> bool:
-    return line.lstrip().startswith("#")
+    """A '#' comment line; not one whose first cell is a spreadsheet's error value (a row of
+    a sheet saved as CSV, said where it is read)."""
+    text = line.lstrip()
+    return text.startswith("#") and not _ERROR_FIRST.match(text)
 
 
 def _with_commented_units(numbered: list[tuple[int, str]], lines: list[tuple[int, str]],
@@ -970,7 +973,7 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     if header_index > 0 and _units_row(header):
         # a logger's two header rows, names over units ("Druck" over "kPa"): one header
         names = [str(c).strip() for c in rows[header_index - 1]] + [""] * width
-        header = [f"{n} [{u.strip('[]() ')}]" if n and u.strip("[]() ") else n or u
+        header = [_named_with_unit(where, numbers[header_index], n, u)
                   for n, u in zip(names, header, strict=False)]
         header_index -= 1
     header = _labview_header(header, rows[:header_index])
@@ -983,6 +986,25 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
                     numbers[first_data:end], header_index, separator, decimal,
                     footer_skipped=[f"A{numbers[k]} ({str(rows[k][0]).strip()[:40]!r})"
                                     for k in range(end, len(rows))])
+
+
+def _named_with_unit(where: str, row: int, name: str, unit: str) -> str:
+    """A column's name over its cell of a units row as one header: ``Druck`` over ``kPa`` is
+    ``Druck [kPa]``; a name that holds the same unit keeps it (German Excel's ``Druck [bar]``
+    over ``bar``). ``ValueError`` where the two units differ: which one the column holds
+    cannot be told, and a factor of 10 or 1000 would go unseen."""
+    written = unit.strip("[]() ")
+    if not (name and written):
+        return name or unit
+    in_name = parse_header(name)[1]
+    named, given = (parse_unit(in_name) if in_name else None), parse_unit(written)
+    if named is None or given is None:
+        return f"{name} [{written}]"
+    if str(named) != str(given):
+        raise ValueError(f"{where}, row {row}: column {name!r} names its unit, and the row of "
+                         f"units under the names gives it {written!r}: expected one unit per "
+                         "column; correct the name or the units row")
+    return name
 
 
 def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
@@ -1991,7 +2013,12 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
                    if formula else
                    f"{_shown(cell)} is the header again, a second record in the file (a "
                    "logger that appended another session): expected one header; split the "
-                   "file there and import each" if again else f"{_shown(cell)} is not a number")
+                   "file there and import each" if again else
+                   f"{_shown(cell)} is a spreadsheet's error value (a formula that failed "
+                   "there: Excel's #VALUE!, #DIV/0!, #REF!, in German #WERT!, #BEZUG!): "
+                   "correct the formula, or delete its row"
+                   if _SPREADSHEET_ERROR.fullmatch(str(cell).strip()) else
+                   f"{_shown(cell)} is not a number")
             raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
                              f"{column.header!r}): {why}")
         if not math.isfinite(number):
@@ -2400,10 +2427,19 @@ def without_summary_rows(table: RawTable) -> RawTable:
                    summaries_skipped=list(named.values()))
 
 
+#: a spreadsheet's error values, a formula that failed, saved into a CSV as their text: Excel's
+#: in English, German and French (#N/A and #NV, a lookup that found nothing: :data:`NO_READING`)
+SPREADSHEET_ERRORS = ("#VALUE!", "#DIV/0!", "#REF!", "#NAME?", "#NUM!", "#NULL!", "#SPILL!",
+                      "#CALC!", "#N/A", "#WERT!", "#BEZUG!", "#ZAHL!", "#ÜBERLAUF!", "#NV",
+                      "#VALEUR!", "#NOMBRE!", "#NOM?", "#NUL!")
+_SPREADSHEET_ERROR = re.compile("|".join(map(re.escape, SPREADSHEET_ERRORS)), re.IGNORECASE)
+#: a line starting with one, a cell of its own: a row, not a '#' comment
+_ERROR_FIRST = re.compile(rf"(?:{_SPREADSHEET_ERROR.pattern})(?=$|[\s;,|])", re.IGNORECASE)
 #: what a cell reads where a logger or a spreadsheet has no reading: LabVIEW's NaN for a
 #: sample its read lost, a spreadsheet's #N/A (German #NV) for a lookup that found none, a
-#: table's n/a or null; and a logger's dashes ('-', '---')
-NO_READING = ("nan", "#n/a", "#nv", "n/a", "null")
+#: table's n/a or null, a German lab sheet's k.A. (keine Angabe) or n.a.; and a logger's dashes
+#: ('-', '---')
+NO_READING = ("nan", "#n/a", "#nv", "n/a", "null", "k.a.", "k. a.", "n.a.")
 _DASHES = re.compile(r"^-+$")
 #: what a logger writes where a channel read beyond its range (OVL, -OVL, OL, Over, Overload,
 #: Overrange, or SCPI's number :data:`SCPI_OVERLOAD`): no reading either, and said apart,

@@ -105,15 +105,16 @@ class Muscle:
         ``ValueError`` names ``where`` and the bad or missing field."""
         if not isinstance(data, dict):
             raise ValueError(f"{where} is not a table: expected {', '.join(('id', *REQUIRED))}")
-        for name in REQUIRED:
-            if name not in data:
-                raise ValueError(f"{where}.{name} is missing: expected the muscle's "
-                                 f"{LIMITS[name][2][2:]}")
+        # a key not known first: a misspelt D0_mm would otherwise be said missing, unnamed
         known = {f.name for f in dataclasses.fields(cls)} - {"tolerances"}
         unknown = sorted(set(data) - known)
         if unknown:
             raise ValueError(f"{where}.{str(unknown[0])[:40]} is not a field of a muscle: "
                              f"expected some of {', '.join(sorted(known))}")
+        for name in REQUIRED:
+            if name not in data:
+                raise ValueError(f"{where}.{name} is missing: expected the muscle's "
+                                 f"{LIMITS[name][2].split(' ', 1)[1]}")
         if "id" in data:
             check_muscle_id(data["id"], f"{where}.id")
         for name in NUMBERS:

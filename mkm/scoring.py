@@ -78,11 +78,28 @@ def evaluation_pressures(steps: pd.DataFrame) -> np.ndarray:
     return np.maximum(measured.to_numpy(dtype=float), 0.0)
 
 
+def slack(steps: pd.DataFrame) -> bool:
+    """Whether a run pulled no force to score a model against: every step's mean force at most
+    0 N, or within its expanded uncertainty (``force_U_N``, or twice the standard ``force_u_N``
+    where only that is held: a slack muscle read through its load cell's noise, whose largest
+    reading, a tenth of a newton, would be Equation 7's scale)."""
+    force = steps["force_N_mean"].to_numpy(dtype=float)
+    if not np.nanmax(force, initial=0.0) > 0:
+        return True
+    if "force_U_N" in steps:
+        U = steps["force_U_N"].to_numpy(dtype=float)
+    elif "force_u_N" in steps:
+        U = 2.0 * steps["force_u_N"].to_numpy(dtype=float)
+    else:
+        return False
+    return bool(np.isfinite(U).all() and (np.abs(force) <= U).all())
+
+
 def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.DataFrame:
     """One row per step: measurement, the model's force, validity, Err% (Equation 7) and the
     residual F_meas - F_model [N]. ``pressure_bar`` is where the model was evaluated,
     ``pressure_meas_bar`` the measured mean (they differ at a domain edge)."""
-    scale = float(np.nanmax(steps["force_N_mean"].to_numpy(dtype=float)))
+    scale = 0.0 if slack(steps) else float(np.nanmax(steps["force_N_mean"].to_numpy(float)))
     valid = np.ravel(prediction.valid)
     force = np.where(valid, np.ravel(prediction.force_N), np.nan)
     rows = pd.DataFrame({
@@ -94,7 +111,8 @@ def score_run(steps: pd.DataFrame, prediction: Prediction, label: str) -> pd.Dat
         "force_meas_std_N": steps["force_N_std"].to_numpy(),
         "force_N": force, "valid": valid, "settled": steps["settled"].to_numpy(),
     })
-    # a run without force (a slack muscle all the way) has no Err%; its residuals still count
+    # a run without force (a slack muscle all the way, :func:`slack`) has no Err%; its residuals
+    # still count
     rows["err_pct"] = (equation7_err_pct(rows["force_meas_N"], rows["force_N"], scale)
                        if scale > 0 else np.nan)
     rows["residual_N"] = rows["force_meas_N"] - rows["force_N"]

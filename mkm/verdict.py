@@ -129,6 +129,14 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
     name = f" ({calibration_name})" if calibration_name else ""
     if command is None:
         misfit = (fit or {}).get("misfit") or {}
+        where = "on this run" + (" with the others" if len(identified) > 1 else "")
+        if misfit and not misfit.get("judged"):
+            # a table's fit: no noise to judge it by, so no misfit to blame the distance on
+            return (f"although the calibration{name} was identified {where}: identify could not "
+                    "judge that fit (the runs show no noise to judge it by), and this distance "
+                    "is the identified model's own miss: weigh it against the instruments' "
+                    "accuracy (mkm import --accuracy force=...,pressure=... lets identify and "
+                    "the report judge it)")
         if misfit.get("judged") and not misfit.get("misfit_branches"):
             found = {p.get("parameter"): p.get("value") for p in fit.get("parameters", [])
                      if p.get("status") == "fitted"}
@@ -138,13 +146,14 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
             lacks = (f"the {' and '.join(terms)} identified with it, which these static models "
                      "lack, are that distance" if terms else "these static models lack the "
                      "identified model's friction and creep")
-            return (f"although the calibration{name} was identified on this run with the others "
-                    f"and fits them within their noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
+            fits = "them within their" if len(identified) > 1 else "it within its"
+            return (f"although the calibration{name} was identified {where} and fits {fits} "
+                    f"noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
                     f"{lacks} (add the rung that has them: --models friction,...; identify's "
                     "steps.csv has the steps predicted with them)")
-        return (f"although the calibration{name} was identified on this run with the others: "
-                "the model does not fit them all with one muscle (the identification's misfit "
-                "notes say where)")
+        return (f"although the calibration{name} was identified {where}: the model does not "
+                f"fit {'them all' if len(identified) > 1 else 'it'} with one muscle (the "
+                "identification's misfit notes say where)")
     at = ", ".join(f"{r['muscle']['eps']:g}" for r in identified if "muscle" in r)
     head = (f"which points to the muscle, not the model: the calibration{name}, identified on "
             f"the runs at eps {at}, does not carry over to this run")
@@ -231,7 +240,8 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     if row is None and any(r["valid_points"] > 0 for r in summary):
         # valid forces without an error: Equation 7 divides by the largest measured force
         return (f"{run_label}: no model can be scored: the run's largest measured force is "
-                "not above 0 N (a slack muscle), and Equation 7's error is relative to it.")
+                "not above 0 N or its steps' uncertainty (a slack muscle), and Equation 7's "
+                "error is relative to it.")
     if row is None:
         return f"{run_label}: no model gives a valid force at any kept step: nothing to use."
     name = names[row["model"]]

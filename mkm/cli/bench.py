@@ -330,6 +330,7 @@ def _calibrate_loadcell(args) -> int:
 
 def _check(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
+    from mkm.bench.preflight import braid_lock
     from mkm.bench.procedures import check
 
     if args.example:
@@ -356,9 +357,12 @@ def _check(args) -> int:
     # the last line a newcomer reads: what was checked and what to do next
     what = ("the simulated device answered (no hardware driven)" if config.simulated
             else "the device answered")
+    # acquire refuses a muscle past its braid lock unless told: the command to type says so
+    past_lock = (" and --allow-past-lock, without which it refuses a muscle past its braid "
+                 "lock" if braid_lock(config) else "")
     then = (f"read the {len(warnings)} warning(s) above, then `mkm acquire` with the same "
-            "options" if warnings else "`mkm acquire` with the same options runs the steps "
-            "above")
+            f"options{past_lock}" if warnings else "`mkm acquire` with the same options runs "
+            "the steps above")
     say(args, "ready", f"{what} and the configuration holds; {then}")
     return 0
 

@@ -140,6 +140,14 @@ def register(subparsers) -> None:
                      "force=0.5N+0.2%%,pressure=0.01bar; each step then carries its "
                      "uncertainty, so mkm report scores E_n and mkm identify judges its fit "
                      "(default: none declared, neither can)")
+    imp.add_argument("--tolerance", type=argtype(_tolerances), default=None,
+                     metavar="D0=MM,t0=MM[,...]",
+                     help="+- tolerances the muscle was made to (D0, t0, L0 [mm], eps, theta0 "
+                     "[deg], rubber [%% of C10 and C01]), e.g. D0=0.1,t0=0.05, recorded with "
+                     "each run as a bench configuration's [muscle.tolerances]: mkm identify "
+                     "draws the tube's into its intervals, mkm report each into its band "
+                     "(default: those of [muscle.tolerances], D0 0.3 mm, t0 0.1 mm, L0 1 mm, "
+                     "eps 0.004, theta0 1 deg, for any name not given)")
     imp.add_argument("--out", default=None,
                      help="folder to put the run folders in (default: mkm-out/runs)")
     add_progress_argument(imp)
@@ -163,6 +171,12 @@ def register(subparsers) -> None:
                      help="the workbook (xlsx) or folder (csv), new or one mkm export wrote "
                      "(nothing else is overwritten); default: mkm-out/export/<run>")
     exp.set_defaults(func=_export)
+
+
+def _tolerances(text: str):
+    from mkm.fem.tolerances import Tolerances  # when given
+
+    return Tolerances.parse(text, Tolerances())
 
 
 def _sample_rate(text: str) -> float:
@@ -228,7 +242,7 @@ def _import(args) -> int:
             force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
             join=args.join_by_time, join_shift_s=args.join_shift,
             scaling=parse_scaling(args.sensitivity, args.offset_volts, args.current_range),
-            sample_rate_hz=args.sample_rate, notify=lines.append,
+            sample_rate_hz=args.sample_rate, tolerances=args.tolerance, notify=lines.append,
             bar=bar)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)

@@ -329,9 +329,9 @@ def held_with(margin_N: float, band_N: float) -> float:
 
 def identified_tolerance(calibration: Calibration | None) -> str:
     """``--tolerance`` text of the identified muscle's 95 % intervals of its braid angle and
-    rubber (1.96 standard deviations of the calibration's band, widened by the misfit's Birge
-    ratio as identify widened the intervals it printed: uniform tolerances of that half-width
-    are a little wider); "" without an identified muscle."""
+    rubber (1.96 standard deviations of the calibration's band, whose covariance identify
+    widened by a misfit's Birge ratio as it widened the intervals it printed: uniform
+    tolerances of that half-width are a little wider); "" without an identified muscle."""
     from mkm.identify.band import Z95, identified_entry
 
     found = identified_entry(calibration) if calibration is not None else None
@@ -340,11 +340,7 @@ def identified_tolerance(calibration: Calibration | None) -> str:
         return ""
     names, values = band["parameters"], band["values"]
     sd = np.sqrt(np.clip(np.diag(np.asarray(band["covariance"], dtype=float)), 0.0, None))
-    # the band's covariance is the fit's own; a misfit's share of the band is a term apart,
-    # which a build tolerance of the angle and the rubber cannot carry but the widening does
-    misfit = found[1]["identified"].get("misfit") or {}
-    widened = max(1.0, float(misfit.get("birge_ratio") or 1.0))
-    half = dict(zip(names, widened * Z95 * sd, strict=True))
+    half = dict(zip(names, Z95 * sd, strict=True))
     parts = []
     if "theta0_deg" in half:
         parts.append(f"theta0={half['theta0_deg']:.2g}")

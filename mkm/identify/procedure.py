@@ -1000,7 +1000,9 @@ def _declared_holds_ratio(rubber: dict) -> str:
             f"(C01/C10 {rubber['ratio_C01_over_C10']:.3g}), and but for the tolerances "
             f"declared of {said} (drawn into the intervals: they trade with the ratio) the runs "
             f"reject {rubber['assumed_from']} (95 % interval {low:.3g}-{high:.3g}): where those "
-            "are known closer, declare them ([muscle.tolerances], [regulator]) and identify again")
+            "are known closer, declare them (a bench's [muscle.tolerances] and [regulator]; a "
+            "table's mkm import --tolerance D0=MM,t0=MM and --accuracy pressure=...) and "
+            "identify again")
 
 
 def _box_cut(rubber: dict) -> str:

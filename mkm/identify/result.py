@@ -423,8 +423,10 @@ class Identification:
         """The last line a reader sees: whether the identified muscle can be used."""
         g = self.goodness
         if g is None or not g.judged:
-            return ("verdict: not judged (the runs show no noise to judge the fit by): weigh "
-                    "the largest |Err%| above against the instruments' accuracy before using "
+            return ("verdict: not judged (the runs show no noise to judge the fit by): "
+                    f"{pulls_late_first(self.groups) if g is not None and g.pulls_late else ''}"
+                    "weigh the "
+                    "largest |Err%| above against the instruments' accuracy before using "
                     "calibration.json")
         if not g.misfit:
             return (f"verdict: the model follows these runs within their noise (chi2/nu "
@@ -432,7 +434,8 @@ class Identification:
                     "report, design, fem solve)")
         return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"
                 f"{g.birge_ratio:.3g} and the estimates may be biased; "
-                f"{_first(self.rubber, g)}the notes above name what the runs show that the fit "
+                f"{_first(self.rubber, g, self.groups)}the notes above name what the runs show "
+                "that the fit "
                 "lacks: act on them before using calibration.json")
 
     def _unjudged_line(self) -> str:
@@ -570,17 +573,24 @@ def _box_cut(rubber: dict) -> str:
             + " and ".join(f"{r:.3g}" for r in cut) if cut else "")
 
 
-def _first(rubber: dict, goodness) -> str:
+def _first(rubber: dict, goodness, groups) -> str:
     """What a misfit's verdict says first: a run declared at its rest length that pulls later
     than the fitted model (a rest length or a gap the runs do not declare: a misfit so large
     that the braid or the rubber's ratio, which barely move the threshold, are read from it
-    too), else :func:`ratio_first`."""
-    if goodness.pulls_late:
-        return ("first, a run declared at its rest length pulls later than the fitted model "
-                "(the note above): fit its rest length (--params ...,L0) or a gap (--params "
-                "...,gap) and identify again, before reading the braid or the rubber's ratio "
-                "from this fit; then ")
-    return ratio_first(rubber, goodness.ratio_freed)
+    too: :func:`pulls_late_first`, ``groups`` what was fitted), else :func:`ratio_first`."""
+    return (pulls_late_first(groups) if goodness.pulls_late
+            else ratio_first(rubber, goodness.ratio_freed))
+
+
+def pulls_late_first(groups) -> str:
+    """What a verdict says first where a run declared at its rest length pulls later than the
+    fitted model, judged or not (a table's fit is not, and its threshold misses as far): the
+    ``--params`` that fit its rest length or a gap besides ``groups``, as the note gives them."""
+    given = ",".join(groups)
+    return ("first, a run declared at its rest length pulls later than the fitted model (the "
+            f"note above): fit its rest length (--params {given},L0) or a gap (--params "
+            f"{given},gap) and identify again, before reading the braid or the rubber's ratio "
+            "from this fit; then ")
 
 
 def ratio_first(rubber: dict, freed: dict | None = None) -> str:

@@ -21,6 +21,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.core.records import file_sha256
+from mkm.scoring import slack
 
 #: the tube that must agree between the runs of one muscle family (eps and the length
 #: ``L0_mm`` may differ: the same tube and braid cut to several lengths)
@@ -496,12 +497,13 @@ def load_runs(paths) -> list[RunData]:
                              "reprocess's folder of it): expected each run once; leave one of "
                              "them out")
         seen.update(dict.fromkeys(keys, run))
-    if not any(np.nanmax(r.steps["force_N_mean"].to_numpy(float), initial=0.0) > 0
-               for r in runs):
-        # a slack muscle (a published map at its shortest length): every model that predicts
-        # slack fits it exactly, and nothing of the muscle can be told from it
+    if all(slack(r.steps) for r in runs):
+        # a slack muscle (a published map at its shortest length, a bench run past its
+        # threshold's reach): every model that predicts slack fits it, and nothing of the
+        # muscle can be told from it
         names = ", ".join(r.name for r in runs)
         raise ValueError(f"run{'s' if len(runs) > 1 else ''} {names}: every settled force is "
-                         "0 N or less (a slack muscle): nothing to identify the muscle from; "
-                         "expected a run whose force rises with the pressure")
+                         "0 N or less, or within its uncertainty (a slack muscle): nothing to "
+                         "identify the muscle from; expected a run whose force rises with the "
+                         "pressure")
     return runs

@@ -267,10 +267,11 @@ def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_p
 
 
 
-@pytest.mark.parametrize("missing", ["NaN", "#N/A"])
+@pytest.mark.parametrize("missing", ["NaN", "#N/A", "k.A.", "n.a."])
 def test_a_logged_sample_without_a_reading_is_skipped_and_named(missing, tmp_path, mkm_cli):
     # LabVIEW writes NaN for a sample its read lost, Excel #N/A for a lookup that found none:
-    # was "cell C12 ...: 'NaN' is not a finite number", the whole record refused
+    # was "cell C12 ...: 'NaN' is not a finite number", the whole record refused; a German lab
+    # sheet's k.A. (keine Angabe) and n.a. were 'not a number' (newuser16)
     t = np.arange(0.0, 60.0, 0.1)
     p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
     force = [f"{f:.4f}" for f in thickwall_N(p, 0.0)]
@@ -1837,6 +1838,40 @@ def test_a_rubber_the_runs_declare_sets_the_ratio_identify_assumes(tmp_path, mkm
     assert table.loc["theta0_deg", "value"] == pytest.approx(THETA0, abs=0.05)
     assert "one rubber scale at the declared rubber's ratio 0.1 assumed" in out
     assert "searched with surrogate:kind=muscle-gp-range" in out
+
+
+def test_the_tolerances_a_lab_declares_are_recorded_with_each_run(tmp_path, mkm_cli):
+    # identify on the Festo DMSP-10-250's map said to declare the tube's tolerances
+    # closer ([muscle.tolerances]) and identify again, which a table had no way to: its runs
+    # took the bench's defaults, D0 +-0.3 mm and t0 +-0.1 mm, 3 % of a 10 mm tube
+    from mkm.fem.tolerances import Tolerances
+    from mkm.identify.runs import load_run_data
+
+    path = tmp_path / "lab.csv"
+    pd.DataFrame({"pressure_bar": PRESSURES, "force_N": thickwall_N(PRESSURES, 0.122),
+                  "direction": ["up"] * 5 + ["down"] * 2}).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122", "--tolerance",
+                        "D0=0.05,t0=0.02")
+    # the names given, the bench's defaults for the others, as [muscle.tolerances] reads
+    declared = Tolerances(D0_mm=0.05, t0_mm=0.02)
+    assert run.meta.muscle.tolerances == declared
+    record = json.loads((run.path / "run.json").read_text(encoding="utf-8"))
+    assert record["calibration"] == {"muscle_tolerances": {
+        "D0_mm": 0.05, "t0_mm": 0.02, "L0_mm": 1.0, "eps": 0.004, "theta0_deg": 1.0,
+        "rubber_fraction": 0.0}}
+    assert load_run_data(run.path).geometry_tolerance_mm == {"D0_mm": 0.05, "t0_mm": 0.02}
+    # without it, none recorded: the defaults
+    (plain,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0.122")
+    assert plain.meta.calibration == {} and plain.meta.muscle.tolerances == Tolerances()
+    # an export and import keeps them
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), _ = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert again.meta.muscle.tolerances == declared
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0.122", "--tolerance",
+                            "D0=-1"])
+    assert (code, err) == (2, "mkm import: error: argument --tolerance: tolerance D0_mm=-1.0 "
+                              "is invalid: expected a +- bound from 0 to 250\n")
 
 
 def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_path, mkm_cli):

@@ -178,7 +178,8 @@ def test_the_dmsp_20_rest_length_is_identified_from_its_table(tmp_path, mkm_cli)
     verdict = said["theta0,rubber"].splitlines()[-2]
     assert verdict.startswith("verdict: a misfit") and (
         "first, a run declared at its rest length pulls later than the fitted model (the note "
-        "above): fit its rest length (--params ...,L0) or a gap") in verdict, verdict
+        "above): fit its rest length (--params theta0,rubber,L0) or a gap (--params "
+        "theta0,rubber,gap)") in verdict, verdict
     chi2 = {k: r["goodness_of_fit"]["chi2_per_nu"] for k, r in fitted.items()}
     assert chi2["theta0,rubber"] > 100 and chi2["theta0,rubber,L0"] < 2, chi2
     row = next(p for p in fitted["theta0,rubber,L0"]["parameters"] if p["parameter"] == "L0_mm")

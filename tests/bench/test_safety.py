@@ -1275,6 +1275,55 @@ def test_a_muscle_outside_the_practical_range_is_a_warning_from_check_and_acquir
     assert code == 2  # beyond the regulator: refused before any warning
 
 
+def test_a_muscle_that_pulls_nothing_at_its_eps_is_a_warning_from_check_and_acquire(
+        tmp_path, mkm_cli):
+    # newuser16: a 10 mm tube with a 1.5 mm wall at eps 0.28, up to 6 bar: check forecast
+    # 2.1 to 25.3 N (Equation 2, which has no threshold) and said ready, and the simulated run
+    # (the FE model) read the load cell's zero at all 23 steps
+    from mkm.bench.preflight import thickwall_force_N
+
+    m10 = load_config().replace(
+        muscle={"D0_mm": 10.0, "t0_mm": 1.5, "L0_mm": 250.0, "eps": 0.28},
+        regulator={"max_pressure_bar": 6.0, "full_scale_bar": 10.0},
+        sequence={"pressures_bar": (2.0, 4.0, 6.0), "preconditioning_cycles": 0})
+    (tmp_path / "m10.toml").write_text(m10.effective_text())
+    # the thick-wall model at the FE model's calibrated angle: 1.6 N of 298 N at eps 0
+    at_rest, pulled = (thickwall_force_N(m10, 6.0, e) for e in (0.0, 0.28))
+    assert pulled < 0.01 * at_rest and thickwall_force_N(m10, 6.0, 0.277) > 0.01 * at_rest
+    said = (f"at eps 0.28 the muscle pulls at most {pulled:.2g} N up to 6 bar, under 1 % of the "
+            f"{at_rest:.0f} N it pulls at its rest length (the thick-wall model, whose wall "
+            "holds the braid below a threshold pressure; Equation 2's forecast above has "
+            "none): every step would read about the load cell's zero; it pulls more than that "
+            "at 6 bar below eps 0.278, at a higher pressure or with a thinner wall")
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "m10.toml")])
+    assert code == 0 and f"mkm check: warning: {said}\n" in err
+    notes = []
+    result = acquire(m10, out_root=tmp_path / "runs", notify=notes.append)
+    assert result.status == "complete" and f"warning: {said}" in notes
+    # and so the simulated muscle (the FE model) does: every step within the cell's noise of 0
+    steps = load_run(result.path).steps
+    assert (steps["force_N_mean"].abs() < 3 * steps["force_N_std"] + 0.1).all()
+    # at eps 0.25 it pulls, about 10 % of its force at rest at 6 bar: no word
+    code, _, err = mkm_cli(["check", "--config", str(tmp_path / "m10.toml"), "--eps", "0.25"])
+    assert code == 0 and "pulls at most" not in err
+    # the run: the report scored the models against its largest reading, a tenth of a newton
+    # of noise ('103.85 % off ... points to the muscle: identify it'), and identify called its
+    # fit ready, every interval its search box; neither has a force to go by
+    import pandas as pd
+
+    from mkm.registry import parse_specs
+    from mkm.report import build_report
+
+    build_report([result.path], parse_specs("thickwall"), out_dir=tmp_path / "report",
+                 cache_dir=None, tolerance=None, surrogate_section=False)
+    summary = pd.read_csv(tmp_path / "report" / "summary.csv")
+    assert summary["max_abs_err_pct"].isna().all() and summary["valid_points"].gt(0).all()
+    code, _, err = mkm_cli(["identify", str(result.path), "--model", "thickwall", "--search",
+                            "model", "--out", str(tmp_path / "id")])
+    assert code == 2 and ("every settled force is 0 N or less, or within its uncertainty (a "
+                          "slack muscle)") in err, err
+
+
 # 4. bounded runs ---------------------------------------------------------------------------
 
 @pytest.mark.parametrize("section, values, message", [

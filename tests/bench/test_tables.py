@@ -895,6 +895,30 @@ def test_a_loggers_units_row_under_the_names(tmp_path):
     assert table.header == ["P", "F"] and set(found) == {"pressure", "force"}
 
 
+def test_a_units_row_under_names_that_hold_their_units(tmp_path):
+    # newuser16: German Excel's export names each column with its unit and writes the units
+    # row under them ('Zeit [s]' over 's'): the header became 'Zeit [s] [s]', no clock's name,
+    # so a 10 Hz record was binned as rows without time (its holds untimed)
+    text = "Zeit [s];Druck [bar];Kraft [N];Temp [°C]\ns;bar;N;°C\n0;0;1,5;22\n0,1;1,5;12,25;22\n"
+    table, found = _one(tmp_path, text)
+    assert table.header == ["Zeit [s]", "Druck [bar]", "Kraft [N]", "Temp [°C]"]
+    assert set(found) >= {"time", "pressure", "force"}
+    np.testing.assert_allclose(column_values(table, found["time"]), [0.0, 0.1])
+    # the same unit spelled otherwise is the same unit; two units for one column are refused
+    table, found = _one(tmp_path, "Zeit;Druck (kPa);Kraft\n[s];[kPa];[N]\n0;0;1,5\n"
+                        "0,1;150;12,25\n", "k.csv")
+    assert table.header == ["Zeit [s]", "Druck (kPa)", "Kraft [N]"]
+    np.testing.assert_allclose(column_values(table, found["pressure"]), [0.0, 1.5])
+    path = tmp_path / "two.csv"
+    path.write_text("Zeit [s];Druck [bar];Kraft [kN]\ns;bar;N\n0;0;1,5\n0,1;1,5;12,25\n",
+                    encoding="utf-8")
+    with pytest.raises(ValueError) as raised:
+        read_tables(path)
+    assert str(raised.value) == ("two.csv, row 2: column 'Kraft [kN]' names its unit, and the "
+                                 "row of units under the names gives it 'N': expected one unit "
+                                 "per column; correct the name or the units row")
+
+
 @pytest.mark.parametrize("units", ["# s, kPa, kN", "#s,kPa,kN", "#,s,kPa,kN", "# [s],[kPa],[kN]"])
 def test_a_units_row_marked_as_a_comment_is_the_units_row(units, tmp_path):
     # a logger marks its units row with '#' so that other readers skip it: it was dropped as
@@ -988,6 +1012,15 @@ def test_a_workbooks_numbers_stored_as_text_with_decimal_commas(tmp_path):
     ("", "lab.csv is empty"),
     ("P,F\n", "has no row of numbers"),
     ("P,F\n1,2\n1,abc\n", "lab.csv, cell B3 (column 'F'): 'abc' is not a number"),
+    # newuser16: a German Excel sheet's failed formula was 'not a number', the cell's error
+    # not said
+    ("P;F\n1;2\n1;#WERT!\n", "lab.csv, cell B3 (column 'F'): '#WERT!' is a spreadsheet's "
+     "error value (a formula that failed there: Excel's #VALUE!, #DIV/0!, #REF!, in German "
+     "#WERT!, #BEZUG!): correct the formula, or delete its row"),
+    # one in a row's first cell was a '#' comment, the row left out without a word
+    ("P,F\n1,2\n#DIV/0!,3\n2,4\n", "lab.csv, cell A3 (column 'P'): '#DIV/0!' is a "
+     "spreadsheet's error value"),
+    ("P,F\n1,2\n1,#NUM!\n", "'#NUM!' is a spreadsheet's error value"),
     ("P,F\n1,2\n1,nan\n", "lab.csv, cell B3 (column 'F'): 'nan' is not a finite number"),
     ("P,F\n1 bar,2\n150 kPa,2\n", "mixed units in column 'P': 'bar' in cell A2, 'kPa' in cell A3"),
     ("P (bar),F\n1,2\n150 kPa,2\n", "mixed units in column 'P (bar)': 'bar' in the header, "

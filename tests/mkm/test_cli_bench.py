@@ -268,14 +268,35 @@ def test_check_rejects_what_the_device_cannot_run(tmp_path, capsys, setting, mes
     assert err.startswith("mkm check: error: config ") and message in err and err.count("\n") == 1
 
 
-def test_check_warns_past_the_braid_lock(capsys):
+@pytest.mark.parametrize("line, said", [
+    ("D0mm = 30.0", "muscle.D0mm is not a field of a muscle: expected some of C01_MPa, C10_MPa, "
+                    "D0_mm, L0_mm, eps, gap_mm, id, t0_mm, theta0_deg"),
+    ("", "muscle.D0_mm is missing: expected the muscle's inner diameter")])
+def test_check_names_a_misspelt_muscle_key(tmp_path, capsys, line, said):
+    # newuser16: [muscle] D0mm = 10 was said as 'muscle.D0_mm is missing: expected the
+    # muscle's  inner diameter', the key written not named
+    config = tmp_path / "lab.toml"
+    config.write_text(load_config().text.replace("D0_mm = 30.0", line, 1), encoding="utf-8")
+    assert main(["check", "--config", str(config)]) == 2
+    assert capsys.readouterr().err == f"mkm check: error: config {config}: {said}\n"
+
+
+def test_check_warns_past_the_braid_lock(tmp_path, capsys):
+    # newuser16: its last line said to run `mkm acquire` with the same options, which refuses
+    # a muscle past its braid lock: the command it names is the one that runs
     assert main(["check", "--eps", "0.4"]) == 0
     err = capsys.readouterr().err
     assert "mkm check: warning: eps 0.4 is past the braid lock" in err
     assert "locking angle 54.7" in err
     assert err.splitlines()[-1] == ("mkm check: ready: the simulated device answered (no "
                                     "hardware driven) and the configuration holds; read the 1 "
-                                    "warning(s) above, then `mkm acquire` with the same options")
+                                    "warning(s) above, then `mkm acquire` with the same options "
+                                    "and --allow-past-lock, without which it refuses a muscle "
+                                    "past its braid lock")
+    out = str(tmp_path / "runs")
+    assert main(["acquire", "--eps", "0.4", "--out", out, "--no-progress"]) == 2
+    assert main(["acquire", "--eps", "0.4", "--out", out, "--no-progress",
+                 "--allow-past-lock"]) == 0
 
 
 def test_check_ends_with_a_verdict(capsys):

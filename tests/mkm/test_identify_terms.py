@@ -195,6 +195,19 @@ def test_unanswered_points_of_the_ratio_fit_are_said_as_such():
         f"evaluations ({UNINFORMED}): the test of C10 and C01 is extrapolated there"]
 
 
+#: what the fits of these verdicts fitted (a table's runs: no friction, no creep)
+GROUPS = ("theta0", "rubber", "offset")
+
+
+def _verdict(goodness, rubber: dict) -> str:
+    from types import SimpleNamespace
+
+    from mkm.identify.result import Identification
+
+    return Identification._verdict_line(SimpleNamespace(goodness=goodness, rubber=rubber,
+                                                        groups=GROUPS))
+
+
 def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     # runs that reject Silastic S's ratio, kept because the braid is in doubt (the other braid
     # at that ratio follows them as well), and the fit at it misfits (chi2/nu 145): the
@@ -202,13 +215,13 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     # given fits within the noise
     from types import SimpleNamespace
 
-    from mkm.identify.result import Identification, ratio_first
+    from mkm.identify.result import ratio_first
 
     held = {"separated": False, "rejects_silastic_ratio": True, "braid_in_doubt": True,
             "assumed_from": "Silastic S's"}
     goodness = SimpleNamespace(judged=True, misfit=[object()], reduced=145.0, birge_ratio=12.0,
                                ratio_freed=None, pulls_late=False)
-    verdict = Identification._verdict_line(SimpleNamespace(goodness=goodness, rubber=held))
+    verdict = _verdict(goodness, held)
     assert verdict.startswith("verdict: a misfit (chi2/nu 145)")
     assert ("first, the runs reject Silastic S's rubber ratio, kept only because the braid is "
             "not given: identify again with the muscle's braid (--braid bonded or --braid "
@@ -220,13 +233,30 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     # bench_identify_wrong_range's seed 20261602: chi2/nu 1.3e4) makes the fit reject the ratio
     # too; the length comes first, not the braid
     late = SimpleNamespace(**{**vars(goodness), "pulls_late": True})
-    said = Identification._verdict_line(SimpleNamespace(goodness=late, rubber=held))
+    said = _verdict(late, held)
     assert "first, a run declared at its rest length pulls later" in said
     assert "--braid" not in said
+    # the --params to type, as the note gives them (newuser16: it said '--params ...,L0')
+    assert "fit its rest length (--params theta0,rubber,offset,L0) or a gap" in said
     within = SimpleNamespace(judged=True, misfit=[], reduced=1.1, birge_ratio=1.0,
                              ratio_freed=None, pulls_late=False)
-    assert "--braid" not in Identification._verdict_line(
-        SimpleNamespace(goodness=within, rubber=held))
+    assert "--braid" not in _verdict(within, held)
+    # newuser16: a table's fit is not judged, and the Festo DMSP-20-300's map read at its
+    # table's 296 mm pulls from 0.43 bar, the fit from 0.04: the note said to fit the rest
+    # length, the verdict only to weigh the misses and use calibration.json
+    unjudged = SimpleNamespace(judged=False, misfit=[], pulls_late=True)
+    said = _verdict(unjudged, held)
+    assert said == ("verdict: not judged (the runs show no noise to judge the fit by): first, a "
+                    "run declared at its rest length pulls later than the fitted model (the "
+                    "note above): fit its rest length (--params theta0,rubber,offset,L0) or a "
+                    "gap (--params theta0,rubber,offset,gap) and identify again, before reading "
+                    "the braid or the rubber's ratio from this fit; then weigh the largest "
+                    "|Err%| above against the instruments' accuracy before using "
+                    "calibration.json")
+    unjudged.pulls_late = False
+    assert _verdict(unjudged, held) == (
+        "verdict: not judged (the runs show no noise to judge the fit by): weigh the largest "
+        "|Err%| above against the instruments' accuracy before using calibration.json")
 
 
 def test_a_creep_time_constant_at_its_search_bound_is_said():

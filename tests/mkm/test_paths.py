@@ -161,7 +161,12 @@ def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch,
     work.mkdir()
     monkeypatch.chdir(work)
     assert main(["data", "copy", name]) == 0
-    assert capsys.readouterr().out.strip() == name
+    copied = capsys.readouterr()
+    assert copied.out.strip() == name
+    # newuser16: the path alone said nothing of what to do with it
+    assert copied.err == (f"mkm data copy: note: import it with mkm import {name} --id ID --D0 "
+                          "MM --t0 MM --muscle NAME (its # header names its muscles and their "
+                          "geometry; the guide's run folders page gives the lines for each)\n")
     digest = hashlib.sha256((work / name).read_bytes()).hexdigest()
     readme = (ROOT / "mkm" / "data" / "published" / "README.md").read_text("utf-8")
     assert f"SHA-256 `{digest}`" in readme

@@ -171,9 +171,21 @@ def test_a_calibration_that_fits_its_runs_within_their_noise_is_not_called_a_mis
                                 "misfit_branches": ["r1 loading"]}}
     assert "does not fit them all with one muscle" in muscle_advice(
         "runs/r1", identified, "calibration.json", fit=misfit)
-    # and so is a fit nobody judged (imported tables without their accuracy)
-    assert "does not fit them all" in muscle_advice(
-        "runs/r1", identified, fit={**fit, "misfit": {"judged": False}})
+    # newuser16: a fit nobody judged (imported tables without their accuracy) was called one
+    # too, 'the identification's misfit notes say where', which has none; and a calibration
+    # identified on this run alone was 'identified on this run with the others'
+    unjudged = {**fit, "misfit": {"judged": False}}
+    assert muscle_advice("runs/r1", identified, fit=unjudged) == (
+        "although the calibration was identified on this run with the others: identify could "
+        "not judge that fit (the runs show no noise to judge it by), and this distance is the "
+        "identified model's own miss: weigh it against the instruments' accuracy (mkm import "
+        "--accuracy force=...,pressure=... lets identify and the report judge it)")
+    alone = identified[:1]
+    assert muscle_advice("runs/r1", alone, fit=unjudged).startswith(
+        "although the calibration was identified on this run: identify could not judge")
+    assert muscle_advice("runs/r1", alone, fit=misfit).startswith(
+        "although the calibration was identified on this run: the model does not fit it with "
+        "one muscle")
 
 
 def test_the_identify_it_suggests_takes_every_run_of_the_muscle_at_hand():
@@ -235,10 +247,31 @@ def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
     slack = [_row("eq2", math.nan, 1e-6), _row("thickwall", math.nan, 2e-5)]
     assert verdict("Run 1 (eps 20.8 %)", slack, NAMES, 0.02) == (
         "Run 1 (eps 20.8 %): no model can be scored: the run's largest measured force is not "
-        "above 0 N (a slack muscle), and Equation 7's error is relative to it.")
+        "above 0 N or its steps' uncertainty (a slack muscle), and Equation 7's error is "
+        "relative to it.")
     invalid = [_row("eq2", math.nan, 1e-6, valid=0)]
     assert verdict("Run 1", invalid, NAMES, 0.02) == (
         "Run 1: no model gives a valid force at any kept step: nothing to use.")
+
+
+def test_a_run_whose_forces_are_within_their_uncertainty_is_slack():
+    # newuser16: a bench run of a slack muscle reads its load cell's noise, up to 0.13 N: its
+    # Err% was relative to that (the FE model '103.85 % off')
+    import pandas as pd
+
+    from mkm.scoring import slack
+
+    noise = pd.DataFrame({"force_N_mean": [-0.04, 0.02, 0.13], "force_U_N": [1.9, 1.9, 1.9]})
+    assert slack(noise)
+    assert not slack(noise.assign(force_N_mean=[-0.04, 0.02, 2.5]))  # one step pulls
+    # identify's steps hold the standard uncertainty only: twice it is the expanded
+    assert slack(noise.rename(columns={"force_U_N": "force_u_N"}).assign(force_u_N=0.95))
+    assert not slack(noise.rename(columns={"force_U_N": "force_u_N"}).assign(force_u_N=0.05))
+    # a table without its accuracy cannot tell noise: slack only at 0 N or less
+    assert not slack(noise[["force_N_mean"]])
+    assert slack(pd.DataFrame({"force_N_mean": [0.0, 0.0]}))
+    # a budget left empty (a step without one) is no bound
+    assert not slack(noise.assign(force_U_N=[1.9, float("nan"), 1.9]))
 
 
 def test_a_run_without_a_kept_step_is_said_so_not_that_no_model_is_valid():
