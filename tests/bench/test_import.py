@@ -271,7 +271,7 @@ def test_a_row_with_a_blank_force_or_pressure_is_skipped_and_named(suffix, tmp_p
 def test_a_logged_sample_without_a_reading_is_skipped_and_named(missing, tmp_path, mkm_cli):
     # LabVIEW writes NaN for a sample its read lost, Excel #N/A for a lookup that found none:
     # was "cell C12 ...: 'NaN' is not a finite number", the whole record refused; a German lab
-    # sheet's k.A. (keine Angabe) and n.a. were 'not a number' (newuser16)
+    # sheet's k.A. (keine Angabe) and n.a. were 'not a number'
     t = np.arange(0.0, 60.0, 0.1)
     p = np.interp(t, [0, 5, 30, 55, 60], [0, 0, 2.5, 0, 0])
     force = [f"{f:.4f}" for f in thickwall_N(p, 0.0)]

@@ -1277,7 +1277,7 @@ def test_a_muscle_outside_the_practical_range_is_a_warning_from_check_and_acquir
 
 def test_a_muscle_that_pulls_nothing_at_its_eps_is_a_warning_from_check_and_acquire(
         tmp_path, mkm_cli):
-    # newuser16: a 10 mm tube with a 1.5 mm wall at eps 0.28, up to 6 bar: check forecast
+    # a 10 mm tube with a 1.5 mm wall at eps 0.28, up to 6 bar: check forecast
     # 2.1 to 25.3 N (Equation 2, which has no threshold) and said ready, and the simulated run
     # (the FE model) read the load cell's zero at all 23 steps
     from mkm.bench.preflight import thickwall_force_N

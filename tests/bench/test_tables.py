@@ -896,7 +896,7 @@ def test_a_loggers_units_row_under_the_names(tmp_path):
 
 
 def test_a_units_row_under_names_that_hold_their_units(tmp_path):
-    # newuser16: German Excel's export names each column with its unit and writes the units
+    # German Excel's export names each column with its unit and writes the units
     # row under them ('Zeit [s]' over 's'): the header became 'Zeit [s] [s]', no clock's name,
     # so a 10 Hz record was binned as rows without time (its holds untimed)
     text = "Zeit [s];Druck [bar];Kraft [N];Temp [°C]\ns;bar;N;°C\n0;0;1,5;22\n0,1;1,5;12,25;22\n"
@@ -1012,7 +1012,7 @@ def test_a_workbooks_numbers_stored_as_text_with_decimal_commas(tmp_path):
     ("", "lab.csv is empty"),
     ("P,F\n", "has no row of numbers"),
     ("P,F\n1,2\n1,abc\n", "lab.csv, cell B3 (column 'F'): 'abc' is not a number"),
-    # newuser16: a German Excel sheet's failed formula was 'not a number', the cell's error
+    # a German Excel sheet's failed formula was 'not a number', the cell's error
     # not said
     ("P;F\n1;2\n1;#WERT!\n", "lab.csv, cell B3 (column 'F'): '#WERT!' is a spreadsheet's "
      "error value (a formula that failed there: Excel's #VALUE!, #DIV/0!, #REF!, in German "

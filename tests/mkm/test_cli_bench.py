@@ -273,7 +273,7 @@ def test_check_rejects_what_the_device_cannot_run(tmp_path, capsys, setting, mes
                     "D0_mm, L0_mm, eps, gap_mm, id, t0_mm, theta0_deg"),
     ("", "muscle.D0_mm is missing: expected the muscle's inner diameter")])
 def test_check_names_a_misspelt_muscle_key(tmp_path, capsys, line, said):
-    # newuser16: [muscle] D0mm = 10 was said as 'muscle.D0_mm is missing: expected the
+    # [muscle] D0mm = 10 was said as 'muscle.D0_mm is missing: expected the
     # muscle's  inner diameter', the key written not named
     config = tmp_path / "lab.toml"
     config.write_text(load_config().text.replace("D0_mm = 30.0", line, 1), encoding="utf-8")
@@ -282,7 +282,7 @@ def test_check_names_a_misspelt_muscle_key(tmp_path, capsys, line, said):
 
 
 def test_check_warns_past_the_braid_lock(tmp_path, capsys):
-    # newuser16: its last line said to run `mkm acquire` with the same options, which refuses
+    # its last line said to run `mkm acquire` with the same options, which refuses
     # a muscle past its braid lock: the command it names is the one that runs
     assert main(["check", "--eps", "0.4"]) == 0
     err = capsys.readouterr().err

@@ -1016,7 +1016,7 @@ def test_the_tolerance_a_misfit_identification_suggests_is_its_widened_intervals
     """A 40 mm natural-rubber tube identified from two runs at chi2/nu 2.06: identify printed
     theta0 27.003 deg [26.475, 27.511] and the rubber 1.8836 [1.7211, 2.0709], widened x1.4368
     by the misfit, and wrote its band's covariance widened so (the fit's own times the Birge
-    ratio squared). newuser16: design widened it once more, suggesting 0.74 deg and 12 % here
+    ratio squared). Design widened it once more, suggesting 0.74 deg and 12 % here
     (the Festo DMSP-10-250's map, widened x7.28: theta0=25,rubber=3.6e+02%, where identify
     printed +-3.6 deg and +-51 %); it suggests the intervals identify printed (0.52 deg,
     8.6 %)."""

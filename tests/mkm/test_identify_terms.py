@@ -236,12 +236,12 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     said = _verdict(late, held)
     assert "first, a run declared at its rest length pulls later" in said
     assert "--braid" not in said
-    # the --params to type, as the note gives them (newuser16: it said '--params ...,L0')
+    # the --params to type, as the note gives them (it said '--params ...,L0')
     assert "fit its rest length (--params theta0,rubber,offset,L0) or a gap" in said
     within = SimpleNamespace(judged=True, misfit=[], reduced=1.1, birge_ratio=1.0,
                              ratio_freed=None, pulls_late=False)
     assert "--braid" not in _verdict(within, held)
-    # newuser16: a table's fit is not judged, and the Festo DMSP-20-300's map read at its
+    # a table's fit is not judged, and the Festo DMSP-20-300's map read at its
     # table's 296 mm pulls from 0.43 bar, the fit from 0.04: the note said to fit the rest
     # length, the verdict only to weigh the misses and use calibration.json
     unjudged = SimpleNamespace(judged=False, misfit=[], pulls_late=True)

@@ -163,7 +163,7 @@ def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch,
     assert main(["data", "copy", name]) == 0
     copied = capsys.readouterr()
     assert copied.out.strip() == name
-    # newuser16: the path alone said nothing of what to do with it
+    # the path alone said nothing of what to do with it
     assert copied.err == (f"mkm data copy: note: import it with mkm import {name} --id ID --D0 "
                           "MM --t0 MM --muscle NAME (its # header names its muscles and their "
                           "geometry; the guide's run folders page gives the lines for each)\n")

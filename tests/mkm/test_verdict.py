@@ -171,7 +171,7 @@ def test_a_calibration_that_fits_its_runs_within_their_noise_is_not_called_a_mis
                                 "misfit_branches": ["r1 loading"]}}
     assert "does not fit them all with one muscle" in muscle_advice(
         "runs/r1", identified, "calibration.json", fit=misfit)
-    # newuser16: a fit nobody judged (imported tables without their accuracy) was called one
+    # a fit nobody judged (imported tables without their accuracy) was called one
     # too, 'the identification's misfit notes say where', which has none; and a calibration
     # identified on this run alone was 'identified on this run with the others'
     unjudged = {**fit, "misfit": {"judged": False}}
@@ -255,7 +255,7 @@ def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
 
 
 def test_a_run_whose_forces_are_within_their_uncertainty_is_slack():
-    # newuser16: a bench run of a slack muscle reads its load cell's noise, up to 0.13 N: its
+    # a bench run of a slack muscle reads its load cell's noise, up to 0.13 N: its
     # Err% was relative to that (the FE model '103.85 % off')
     import pandas as pd
 
