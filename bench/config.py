@@ -34,6 +34,7 @@ from mkm.bench.settings import (
     within,
 )
 from mkm.bench.sim_settings import Sim
+from mkm.core.ranges import parse_fraction
 from mkm.core.records import file_sha256, write_atomic
 from mkm.fem.limits import LIMITS, check_gap, check_muscle_id, check_wall
 from mkm.fem.muscle import Muscle
@@ -105,6 +106,8 @@ def read_muscle(table: Any, where: str = "muscle") -> Muscle:
     table = dict(table)
     tolerances = typed_section(Tolerances, table.pop("tolerances", {}), f"{where}.tolerances")
     check_muscle_id(table.get("id"), f"{where}.id")
+    if isinstance(table.get("eps"), str):  # "12.2%", as --eps takes it
+        table["eps"] = parse_fraction(table["eps"], f"{where}.eps")
     return Muscle.from_dict(table, where, tolerances=tolerances)
 
 

@@ -123,6 +123,15 @@ def test_minimal_config_takes_defaults():
     assert c.muscle.D0_mm == 30.0 and isinstance(c.muscle.D0_mm, float)
 
 
+def test_the_muscles_eps_is_written_as_the_command_line_takes_it():
+    # `eps = "12.2%"`, as --eps 12.2% is typed, was refused: 'expected a number'
+    assert parse_config(BASE.replace("eps = 0", 'eps = "12.2%"')).muscle.eps == pytest.approx(
+        0.122, abs=1e-15)
+    with pytest.raises(ValueError, match=r": muscle\.eps 12\.2: a fraction is expected; did "
+                                         r"you mean 12\.2%\?$"):
+        parse_config(BASE.replace("eps = 0", 'eps = "12.2"'))
+
+
 @pytest.mark.parametrize("extra, message", [
     ("[daq]\nterminal_config = 'default'", r"daq\.terminal_config='default' is invalid"),
     ("[daq]\nbuffer_s = 60", r"daq\.buffer_s=60 is invalid: expected 600 s"),
