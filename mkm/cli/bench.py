@@ -20,6 +20,7 @@ from mkm.cli.common import (
     argtype,
     command_name,
     has_display,
+    next_commands,
     say,
     shared_help,
 )
@@ -238,7 +239,8 @@ def _acquire(args) -> int:
     except BenchError as exc:  # the bench is held by another process: nothing was touched
         return _failed(args, exc)
     return _kept(result.exit_code,
-                 lambda: _said(args, result, " SIMULATED" if config.simulated else ""))
+                 lambda: _said(args, result, " SIMULATED" if config.simulated else "",
+                               config.muscle.eps))
 
 
 def _kept(code: int, report) -> int:
@@ -253,8 +255,9 @@ def _kept(code: int, report) -> int:
     return code
 
 
-def _said(args, result, simulated: str) -> None:
-    """A run's outcome on stderr and its folder on stdout, once it exists."""
+def _said(args, result, simulated: str, eps: float | None = None) -> None:
+    """A run's outcome on stderr and its folder on stdout, once it exists; for a run of a
+    muscle at ``eps`` that completed, what to type next."""
     if result.path is None:
         say(args, "error", f"{simulated.strip()} {result.reason}".strip())
         return
@@ -262,6 +265,8 @@ def _said(args, result, simulated: str) -> None:
     if result.manual_vent_required:
         say(args, "error", "VENT THE MUSCLE BY HAND NOW: the vent was not verified")
     print(result.path, flush=True)
+    if eps is not None and result.status == "complete":
+        say(args, "note", next_commands([result.path], [eps]))
 
 
 def _tare(args) -> int:

@@ -93,6 +93,17 @@ def say(args, kind: str, message) -> None:
     print(line, file=sys.stderr)
 
 
+def next_commands(paths, eps) -> str:
+    """What a newcomer types after recording or importing the run folders ``paths`` (at the
+    shortenings ``eps``): the report of them, and identify where they hold two eps or more."""
+    typed = " ".join(f'"{p}"' if " " in str(p) else str(p) for p in paths)
+    fit = (f"mkm identify {typed} fits the muscle's braid angle and rubber to them"
+           if len({round(float(e), 6) for e in eps}) > 1 else
+           "mkm identify with runs of this muscle at two eps or more fits its braid angle and "
+           "rubber")
+    return f"next: mkm report {typed} scores every model against the measurement; {fit}"
+
+
 def parse_within(text: str, flag: str, name: str) -> float:
     """``text`` as a number inside ``LIMITS[name]`` (:mod:`mkm.fem.limits`): a model that only
     records a value (Equation 2's ``L0_mm``) or flags it (a surrogate) must not take a typo."""

@@ -11,7 +11,9 @@ from mkm.cli.common import (
     add_progress_argument,
     argtype,
     derived_help,
+    next_commands,
     parse_within,
+    say,
     shared_help,
 )
 from mkm.core.ranges import parse_fraction, parse_number
@@ -250,6 +252,11 @@ def _import(args) -> int:
         summary_line("import", run.line())
     for run in runs:
         print(run.path)
+    if runs:
+        from mkm.bench.storage import read_meta
+
+        say(args, "note", next_commands([r.path for r in runs],
+                                        [read_meta(r.path).muscle.eps for r in runs]))
     return 0
 
 

@@ -1840,6 +1840,36 @@ def test_a_rubber_the_runs_declare_sets_the_ratio_identify_assumes(tmp_path, mkm
     assert "searched with surrogate:kind=muscle-gp-range" in out
 
 
+def test_an_import_says_the_commands_to_type_next_and_they_run(tmp_path, mkm_cli):
+    # the run folders were printed and nothing said what to do with them
+    path = tmp_path / "one.csv"
+    pd.DataFrame({"pressure_bar": PRESSURES, "force_N": thickwall_N(PRESSURES, 0.0),
+                  "direction": ["up"] * 5 + ["down"] * 2}).to_csv(path, index=False)
+    (one,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert err.splitlines()[-1] == (
+        f"mkm import: note: next: mkm report {one.path} scores every model against the "
+        "measurement; mkm identify with runs of this muscle at two eps or more fits its braid "
+        "angle and rubber")
+    # a table of two eps: identify is offered with both folders, and both commands run as
+    # printed
+    both = tmp_path / "both.csv"
+    pd.concat([pd.DataFrame({"eps": eps, "pressure_bar": PRESSURES,
+                             "force_N": thickwall_N(PRESSURES, eps),
+                             "direction": ["up"] * 5 + ["down"] * 2}) for eps in (0.0, 0.122)]
+              ).to_csv(both, index=False)
+    runs, err = _import(mkm_cli, both, *MUSCLE)
+    folders = " ".join(str(run.path) for run in runs)
+    line = err.splitlines()[-1]
+    assert line == (f"mkm import: note: next: mkm report {folders} scores every model against "
+                    f"the measurement; mkm identify {folders} fits the muscle's braid angle and "
+                    "rubber to them")
+    report = line.split("next: mkm ", 1)[1].split(" scores every model", 1)[0].split()
+    identify = line.split("; mkm ", 1)[1].split(" fits the muscle's", 1)[0].split()
+    for command, out in ((report, "report"), (identify, "identify")):
+        code, _, err = mkm_cli([*command, "--out", str(tmp_path / out)])
+        assert code == 0, err
+
+
 def test_the_tolerances_a_lab_declares_are_recorded_with_each_run(tmp_path, mkm_cli):
     # identify on the Festo DMSP-10-250's map said to declare the tube's tolerances
     # closer ([muscle.tolerances]) and identify again, which a table had no way to: its runs

@@ -21,10 +21,16 @@ def _bench_state(tmp_path, monkeypatch):
 def test_acquire_prints_the_run_folder_last(tmp_path, capsys):
     rc = main(["acquire", "--pressures", "0.5,1", "--eps", "12.2%", "--out", str(tmp_path),
                "--no-progress"])
-    out = capsys.readouterr().out.strip().splitlines()
+    captured = capsys.readouterr()
+    out = captured.out.strip().splitlines()
     assert rc == 0
     run = load_run(Path(out[-1]))
     assert run.complete and run.meta["muscle"]["eps"] == pytest.approx(0.122)
+    # and what to type next, on stderr
+    assert captured.err.strip().splitlines()[-1] == (
+        f"mkm acquire: note: next: mkm report {out[-1]} scores every model against the "
+        "measurement; mkm identify with runs of this muscle at two eps or more fits its braid "
+        "angle and rubber")
     assert list(run.steps["set_pressure_bar"]) == [0.5, 1.0, 0.5]
     assert run.meta["config_overrides"]["muscle.eps"] == pytest.approx(0.122)
 
