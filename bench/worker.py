@@ -552,16 +552,14 @@ class Acquisition:
         limit = self.config.regulator.max_pressure_bar
         soft, hard = OVERPRESSURE_MARGIN_FRACTION * limit, OVERPRESSURE_HARD_FRACTION * limit
         pressure = reading + self.monitor_low_bar
-        if self.monitor_low_bar > 0 and math.isfinite(reading):
-            said = (f"{pressure:.3f} bar measured ({reading:.3f} bar read, the monitor reading "
-                    f"{-self.monitor_low_bar:+.4f} bar vented at the tare)")
-        else:
-            said = f"{pressure:.3f} bar measured"
         if not pressure > limit + soft:  # NaN is the non-finite interlock's
             self._over_since_s = None
             return None
         if self._over_since_s is None:
             self._over_since_s = t_s
+        said = f"{pressure:.3f} bar measured" + (
+            f" ({reading:.3f} bar read, the monitor reading {-self.monitor_low_bar:+.4f} bar "
+            "vented at the tare)" if self.monitor_low_bar > 0 else "")
         if pressure > limit + hard:
             return (f"over-pressure interlock: {said} at {t_s:g} s, above "
                     f"max_pressure_bar {limit:g} + {hard:.3g} bar (regulator overshoot)")

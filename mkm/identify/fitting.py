@@ -285,8 +285,8 @@ class SurrogateStatic(StaticSource):
                     for k, v in values.items() if not box[k][0] <= v <= box[k][1] + 1e-9]
         if nominal is not None and fits_rubber:
             low, high = self.scale_bounds(assumed_share(nominal))
-            ratio, said = assumed_ratio(nominal)
             if not low < high:
+                ratio, said = assumed_ratio(nominal)
                 out.append(f"{said} C01/C10 {ratio:.3g} has no rubber scale with C10_MPa in "
                            f"[{box['C10_MPa'][0]:g}, {box['C10_MPa'][1]:g}] and C01_MPa in "
                            f"[{box['C01_MPa'][0]:g}, {box['C01_MPa'][1]:g}]")

@@ -337,8 +337,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     if "rubber_scale" in names:
         # one scale at the ratio of the rubber the runs declare (else Silastic S's), unless the
         # runs separate C10 and C01
-        start.pop("c01_fraction", None)
-        start.update({n: nominal[n] for n in ("c01_fraction",) if n in nominal})
+        if "c01_fraction" in nominal:
+            start["c01_fraction"] = nominal["c01_fraction"]
+        else:
+            start.pop("c01_fraction", None)
 
     notify(f"fitting {', '.join(groups)} on {sum(len(r.steps) for r in runs)} settled steps "
            f"of {len(runs)} run(s) with {source.name}")
@@ -1030,10 +1032,11 @@ def _assumed_ratio_terms(source, runs, best, rubber) -> dict:
     if "ratio_ci" in rubber:
         low, high = (min(max(r, low), high) for r in rubber["ratio_ci"])
     box = source.share_bounds(best.values["rubber_scale"])
+    assumed, said = fitting.assumed_share(best.values), fitting.assumed_ratio(best.values)[1]
     terms = {}
     for ratio in sorted({low, high}):
         share = min(max(ratio / (1.0 + ratio), box[0]), box[1])
-        if abs(share - fitting.assumed_share(best.values)) < 1e-3:
+        if abs(share - assumed) < 1e-3:
             continue
         name = f"C01/C10 {share / (1.0 - share):.3g}"
         try:
@@ -1043,10 +1046,8 @@ def _assumed_ratio_terms(source, runs, best, rubber) -> dict:
             continue
         shift = {n: refit.values[n] - best.values[n] for n in STATIC_NAMES if n in best.names}
         terms[name] = {"kind": "one-sided",
-                       "what": f"the fit at {name} minus the fit at "
-                               f"{fitting.assumed_ratio(best.values)[1]} ratio",
-                       "shift": {**shift,
-                                 "c01_fraction": share - fitting.assumed_share(best.values)}}
+                       "what": f"the fit at {name} minus the fit at {said} ratio",
+                       "shift": {**shift, "c01_fraction": share - assumed}}
     return terms
 
 

@@ -44,6 +44,20 @@ def _import(mkm_cli, path, *argv):
     return [load_run(line) for line in out.strip().splitlines()], err
 
 
+def _exported_table_imports_again(mkm_cli, run, book, n: int) -> pd.DataFrame:
+    """``run`` exported to the workbook ``book``: its table as mkm import read it (the ramp's
+    ``Druck [bar]`` and ``Kraft [N]``, ``n`` rows) is a sheet of its own, which imports again to
+    the same steps (the same cells in, the same bins out); the sheet."""
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
+    assert code == 0, err
+    sheet = pd.read_excel(book, sheet_name="imported_table")
+    assert sheet.columns.tolist() == ["Druck [bar]", "Kraft [N]"] and len(sheet) == n
+    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
+    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
+        assert again.steps[column].tolist() == run.steps[column].tolist()
+    return sheet
+
+
 def _scores(tmp_path, runs, name="report") -> pd.DataFrame:
     """Thick-wall at the angle that made the files, scored against the imported runs."""
     build_report([r.path for r in runs], parse_specs(f"thickwall:theta0_deg={THETA0:g}"),
@@ -718,13 +732,7 @@ def test_an_export_of_a_tdms_record_without_time_carries_its_group(tmp_path, mkm
     assert run.meta.imported_from["shape"] == "ramp"
     assert (run.path / "imported_table.tdms").read_bytes() == path.read_bytes()
     book = tmp_path / "run.xlsx"
-    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
-    assert code == 0, err
-    sheet = pd.read_excel(book, sheet_name="imported_table")
-    assert sheet.columns.tolist() == ["Druck [bar]", "Kraft [N]"] and len(sheet) == n
-    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
-    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
-        assert again.steps[column].tolist() == run.steps[column].tolist()
+    _exported_table_imports_again(mkm_cli, run, book, n)
 
 
 def test_tdms_waveforms_at_two_rates_are_refused(tmp_path, mkm_cli):
@@ -1922,16 +1930,8 @@ def test_an_export_of_a_record_without_time_carries_the_table_it_came_from(tmp_p
                             str(tmp_path / "csv")])
     assert code == 0, err
     assert (tmp_path / "csv" / "imported_table.csv").read_bytes() == path.read_bytes()
-    # the workbook: the table as mkm import read it, a sheet of its own, which imports again
-    # to the same steps (the same cells in, the same bins out)
     book = tmp_path / "run.xlsx"
-    code, _, err = mkm_cli(["export", str(run.path), "--out", str(book)])
-    assert code == 0, err
-    sheet = pd.read_excel(book, sheet_name="imported_table")
-    assert sheet.columns.tolist() == ["Druck [bar]", "Kraft [N]"] and len(sheet) == n
-    (again,), _ = _import(mkm_cli, book, *MUSCLE, "--eps", "0", "--sheet", "imported_table")
-    for column in ("pressure_bar_mean", "force_N_mean", "direction", "n"):
-        assert again.steps[column].tolist() == run.steps[column].tolist()
+    sheet = _exported_table_imports_again(mkm_cli, run, book, n)
     # the workbook still imports back to the run it was, and takes a new export of its name
     (restored,), _ = _import(mkm_cli, book)
     assert restored.steps["force_N_mean"].tolist() == run.steps["force_N_mean"].tolist()
