@@ -205,7 +205,7 @@ def _verdict(goodness, rubber: dict) -> str:
     from mkm.identify.result import Identification
 
     return Identification._verdict_line(SimpleNamespace(goodness=goodness, rubber=rubber,
-                                                        groups=GROUPS))
+                                                        groups=GROUPS, instrument_warnings=[]))
 
 
 def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
@@ -409,9 +409,13 @@ def test_a_creep_over_before_the_holds_start_is_said_to_be_a_load_cell_gain_as_w
     assert warning["what"] == "creep or load cell gain"
     assert warning["loadcell_reads_low_fraction"] == share
     assert f"  note: {warning['said']}" in out.splitlines()
-    assert warning["said"].startswith(
+    assert warning["said"] == (
         f"creep or load cell: the fitted creep, {percent} of the force with creep_tau_s 1 s "
-        "(95 % CI 1-")
+        "(the runs allow 1 s, the shortest searched), may be over before the holds start, and "
+        f"such a creep is, to these runs, the load cell reading {percent} low from its first "
+        "sample (its declared tolerance +-0.1 %): they cannot tell the two apart; if this "
+        f"muscle is not expected to creep by {percent}, calibrate the load cell (mkm "
+        "calibrate-loadcell) and identify again")
     calibration = json.loads((tmp_path / "id" / "calibration.json").read_text(encoding="utf-8"))
     (entry,) = [e for e in calibration.values() if isinstance(e, dict) and "identified" in e]
     assert entry["identified"]["instrument_warnings"] == record["instrument_warnings"]
