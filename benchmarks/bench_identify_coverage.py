@@ -324,7 +324,9 @@ def summarise(rows: list[dict], departures, seed: int) -> dict:
 
 #: how a draw's line prints a field of its row (any other: as it is)
 PRINTED = {"chi2_per_nu": lambda v: "" if v is None else f"{v:.3g}",
-           "misfit_line": lambda v: "yes" if v else "no", "missed": lambda v: "|".join(v) or "-",
+           "misfit_line": lambda v: "yes" if v else "no",
+           "instrument_warning": lambda v: "yes" if v else "no",
+           "missed": lambda v: "|".join(v) or "-",
            "far": lambda v: "|".join(v) or "-", "message": lambda v: v or ""}
 
 
