@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.design.box_search import (
+    AXIS_RESOLUTION,
     AXIS_VALUES,
     BOX_NAMES,
     COARSE_STEPS,
@@ -377,7 +378,10 @@ def design_record(result: DesignResult) -> dict:
                        "resolution": {"coarse_D0_mm": COARSE_STEPS[0],
                                       "coarse_t0_mm": COARSE_STEPS[1], "D0_mm": D0_STEP_MM,
                                       "t0_mm": T0_STEP_MM, "refined_seeds": SEEDS,
-                                      "L0_mm and theta0_deg values per range": AXIS_VALUES}},
+                                      "L0_mm and theta0_deg values per range": AXIS_VALUES,
+                                      # the FE search keeps its coarse values: a sweep a try
+                                      "L0_mm and theta0_deg refined to": (
+                                          None if s.fe_search else AXIS_RESOLUTION)}},
             # the mesh asked for; a design met within its error has the finer one's forces
             "verification": {"model": "axisym", "mesh": result.mesh,
                              "meshes": _in_mesh_order(result.designs["fe_mesh"]),

@@ -415,6 +415,21 @@ def test_braid_angle_range_searched_and_verified_at_the_chosen_angle():
     assert abs(best["r2_surrogate_N"] - best["r2_fe_N"]) <= best["r2_uncertainty_N"] + 5.0
 
 
+@pytest.mark.skipif("theta0_deg" not in entry("surrogate").parameters,
+                    reason="the registry's surrogate takes no theta0_deg")
+def test_a_braid_angle_between_the_values_of_its_range_is_found():
+    """A range of theta0 was searched at its 5 values alone (28, 30.5, 33, 35.5, 38 deg): 330 N
+    at 2.5 bar, eps 0.15 chose 33 deg and a muscle 52.09 mm wide, where 32 deg meets it 50.91
+    mm wide by the same surrogate (a 6 mm gripper tube over 15:40 deg: 21.25 deg and 15.5 mm
+    chosen, 26 deg meets it 12.8 mm wide). The range is refined around the best design to 0.1
+    deg, whose outer diameter moves by about 0.15 mm: at least as narrow as 32 deg's."""
+    reqs = ["330N@2.5bar,eps=0.15"]
+    ranged = search(reqs, {"theta0_deg": (28.0, 38.0)}).feasible.iloc[0]
+    fixed = search(reqs, {"theta0_deg": 32.0}).feasible.iloc[0]
+    assert ranged["outer_diameter_mm"] <= fixed["outer_diameter_mm"] < 51.0
+    assert 31.5 < ranged["theta0_deg"] < 33.0
+
+
 def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run):
     # 3 bar is above the surrogate's 2.5 bar; a narrow box keeps the FE search to a few sweeps;
     # the kind named, the practical range's does not search in its place
