@@ -345,6 +345,11 @@ def test_a_spec_file_saved_by_a_windows_editor_is_read(tmp_path):
     assert loaded["top"] == 2
     assert [(r.force_N, r.pressure_bar, r.eps) for r in loaded["requirements"]] == [
         (300.0, 2.5, 0.1)]
+    # its "Unicode" (UTF-16, CRLF) and a DOS editor's Ctrl-Z: were 'not valid TOML (UTF-8)'
+    text = "top = 2\r\n[[requirement]]\r\nforce_N = 300\r\npressure_bar = 2.5\r\neps = 0.1\r\n"
+    for data in (text.encode("utf-16"), text.encode() + b"\x1a"):
+        spec.write_bytes(data)
+        assert load_spec(spec) == loaded
 
 
 def test_a_spec_files_requirements_typed_with_units_are_converted(tmp_path):
