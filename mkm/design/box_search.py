@@ -763,6 +763,18 @@ def _near_lock(req: Requirement, theta0_low_deg: float) -> str:
             "lock lies at a larger eps")
 
 
+def _angle_unsearched(result: Search) -> str:
+    """The clause a search stopped by the housing ends with where it held the braid angle at
+    one value: at a given width the force depends on the angle both ways (a smaller one pulls
+    more per braid diameter and swells wider), so a range of it may hold a narrower muscle."""
+    low, high = result.constraints["theta0_deg"]
+    if high > low:
+        return ""
+    lowest, highest = PRACTICAL_RANGE.theta0_deg
+    return (f"; the braid angle was held at {low:.4g} deg: a range of it may hold a narrower "
+            f"muscle (--theta0 {lowest:g}:{highest:g})")
+
+
 def _infeasible_message(result: Search, constraints: Constraints) -> str:
     cand = result.candidates
     if cand["meets_forces"].any():  # only the housing is in the way
@@ -770,7 +782,7 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         return (f"infeasible: no design meets every requirement within max_outer_diameter_mm="
                 f"{constraints.max_outer_diameter_mm:g}: the narrowest that does, "
                 f"{geometry_text(best)}, is {best['outer_diameter_mm']:.1f} mm wide at "
-                f"{result.working_pressure_bar:g} bar"
+                f"{result.working_pressure_bar:g} bar" + _angle_unsearched(result)
                 + _beyond_practical_range(best, result.requirements, result.calibration))
     pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
     closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]

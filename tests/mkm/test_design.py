@@ -435,6 +435,26 @@ def test_a_braid_angle_between_the_values_of_its_range_is_found():
     assert 31.5 < ranged["theta0_deg"] < 33.0
 
 
+@pytest.mark.skipif("theta0_deg" not in entry("surrogate").parameters,
+                    reason="the registry's surrogate takes no theta0_deg")
+def test_a_housing_too_narrow_at_one_braid_angle_says_a_range_of_it_may_fit():
+    """An exoskeleton's 300N@6bar,eps=0.15 in a 20 mm housing was 'infeasible: ... the
+    narrowest that does ... is 29.8 mm wide at 6 bar', with nothing to do; over 15:40 deg the
+    narrowest was 22.0 mm. Here, in the default box: 600 N at one angle needs 57.1 mm, over
+    the surrogate's 28:38 deg 53.6 mm (a smaller angle pulls more per braid diameter, a larger
+    one swells less)."""
+    reqs = ["600N@2.5bar,eps=0.10"]
+    with pytest.raises(ValueError) as held:
+        search(reqs, {"max_outer_diameter_mm": 52.0})
+    assert str(held.value).endswith(
+        "is 57.1 mm wide at 2.5 bar; the braid angle was held at 32.99 deg: a range of it may "
+        "hold a narrower muscle (--theta0 15:40)")
+    with pytest.raises(ValueError) as ranged:
+        search(reqs, {"max_outer_diameter_mm": 52.0, "theta0_deg": (28.0, 38.0)})
+    width = float(re.search(r"is ([\d.]+) mm wide", str(ranged.value))[1])
+    assert width < 55.0 and "--theta0" not in str(ranged.value)
+
+
 def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run):
     # 3 bar is above the surrogate's 2.5 bar; a narrow box keeps the FE search to a few sweeps;
     # the kind named, the practical range's does not search in its place
