@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import re
 import tomllib
 import typing
@@ -48,6 +49,14 @@ def saved_text(data: bytes) -> str:
     return text.rstrip(TEXT_END_PADDING)
 
 
+def separator_hint(argument: str) -> str:
+    """What a Windows path typed on another system needs ("runs\\R": one name here)."""
+    if os.sep != "/" or "\\" not in argument:
+        return ""
+    posix = argument.replace("\\", "/")
+    return f"; on this system folders are separated by /: {posix!r}?"
+
+
 def read_toml(text: str, source: str) -> dict[str, Any]:
     """The tables of the TOML ``text`` read from ``source``, or one-line ``ValueError``."""
     if len(text) > MAX_TEXT_CHARS:
@@ -70,7 +79,8 @@ def read_toml_file(path: str | Path, what: str = "") -> tuple[str, dict[str, Any
         if path.is_dir():
             raise ValueError(f"{what}{shown} is a folder: expected a TOML file")
         if not path.is_file():
-            raise ValueError(f"{what}{shown} does not exist: expected a TOML file")
+            raise ValueError(f"{what}{shown} does not exist: expected a TOML file"
+                             f"{separator_hint(str(path))}")
         if path.stat().st_size > MAX_TEXT_CHARS * 4:
             raise ValueError(f"{what}{shown} is {path.stat().st_size} bytes: expected a TOML "
                              f"file of at most {MAX_TEXT_CHARS} characters")

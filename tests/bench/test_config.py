@@ -213,6 +213,25 @@ def test_a_config_saved_by_windows_programs_is_read_as_it_was_written(tmp_path, 
         "File, Save as, Encoding UTF-8)"]
 
 
+def test_a_config_path_typed_with_backslashes_on_another_system_says_the_separator(
+        tmp_path, mkm_cli, monkeypatch):
+    """`mkm check --config "Müller Versuch 1\\bench.toml"`, pasted from the bench PC: 'does
+    not exist', where `mkm report` of a run folder so typed says the separator here."""
+    folder = tmp_path / "Müller Versuch 1"
+    folder.mkdir()
+    from mkm.bench.config import copy_example_config
+
+    copy_example_config(folder / "bench.toml")
+    monkeypatch.chdir(tmp_path)
+    code, out, err = mkm_cli(["check", "--config", "Müller Versuch 1\\bench.toml"])
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
+        "mkm check: error: config Müller Versuch 1\\bench.toml does not exist: expected a "
+        "TOML file; on this system folders are separated by /: 'Müller Versuch 1/bench.toml'?"]
+    code, out, err = mkm_cli(["check", "--config", "Müller Versuch 1/bench.toml"])
+    assert code == 0, err
+
+
 def test_command_is_clamped_and_monitor_scaled():
     r = load_config().regulator
     assert r.command_volts(1.0) == pytest.approx(2.5)  # 0-10 V over 0-4 bar full scale
