@@ -20,7 +20,8 @@ closed form (``search="model"``), or, for the sliding braid, simulated with the 
 sliding sleeve and fitted with its bonded braid (coarse mesh).
 
 For every reported parameter: does its interval cover the truth? A draw whose misses all come
-with a misfit line is warned; a miss without one is silent. Target: no silent miss.
+with a misfit line or a warning about the instruments (:func:`instrument_warning`) is warned; a
+miss without either is silent. Target: no silent miss.
 
 A third run of the same muscle and departure, at eps 6 % or 18 % (:data:`HELDOUT_EPS`, draw by
 draw), is predicted with the calibration identify wrote and judged against its band
@@ -221,6 +222,7 @@ def one(muscle: dict, out: Path, config, heldout_eps: float, tables: str | None 
     result = identify(runs[:-1], model=FE if sliding else "thickwall", search="model", seed=0)
     predicted = check_heldout(result, runs[-1], out / "identified")
     misfit = result.goodness.line() if result.goodness else None
+    instrument = instrument_warning(result)
     parameters = judge(result, muscle, config)
     missed = [p["parameter"] for p in parameters if not p["covered"]]
     far = [p["parameter"] for p in parameters if p["far"]]
@@ -231,10 +233,23 @@ def one(muscle: dict, out: Path, config, heldout_eps: float, tables: str | None 
             "seed": muscle["seed"], "parameters": parameters, "missed": missed, "far": far,
             "rubber_separated": bool(result.rubber.get("separated")),
             "chi2_per_nu": result.goodness.reduced if result.goodness else None,
-            "misfit_line": misfit, "silent_miss": bool(missed and not misfit),
-            "silent_far_miss": bool(far and not misfit),
+            "misfit_line": misfit, "instrument_warning": instrument,
+            "silent_miss": bool(missed and not (misfit or instrument)),
+            "silent_far_miss": bool(far and not (misfit or instrument)),
             "heldout": predicted, "notes": result.notes,
             "seconds": round(time.perf_counter() - start, 1)}
+
+
+def instrument_warning(result) -> str | None:
+    """What identify said the runs cannot tell from an instrument's error (its notes of
+    identification.json's ``instrument_warnings``: a creep over before the holds start, which
+    is the load cell reading low), or None: a warning the user reads, as a misfit line is."""
+    return "; ".join(w["said"] for w in result.instrument_warnings) or None
+
+
+def warned(row: dict) -> bool:
+    """Whether identify warned of the draw: a misfit line or a warning about the instruments."""
+    return row["misfit_line"] is not None or row.get("instrument_warning") is not None
 
 
 def _values(row: dict, sep: str = ";") -> str:
@@ -259,7 +274,7 @@ def summarise(rows: list[dict], departures, seed: int) -> dict:
     names = sorted({p["parameter"] for r in rows for p in r["parameters"]})
     per_parameter = {}
     for name in names:
-        judged = [(p["covered"], p["far"], r["misfit_line"] is not None) for r in rows
+        judged = [(p["covered"], p["far"], warned(r)) for r in rows
                   for p in r["parameters"] if p["parameter"] == name]
         per_parameter[name] = {
             "draws": len(judged),
@@ -268,13 +283,12 @@ def summarise(rows: list[dict], departures, seed: int) -> dict:
             "silent_misses": sum(not c and not w for c, _, w in judged),
             "silent_far_misses": sum(f and not w for _, f, w in judged)}
     by_departure = {d: {"draws": sum(r["departure"] == d for r in rows),
-                        "warned": sum(r["departure"] == d and r["misfit_line"] is not None
-                                      for r in rows),
+                        "warned": sum(r["departure"] == d and warned(r) for r in rows),
                         "silent_misses": sum(r["departure"] == d and r["silent_miss"]
                                              for r in rows),
                         "silent_far_misses": sum(r["departure"] == d and r["silent_far_miss"]
                                                  for r in rows)} for d in departures}
-    unwarned = [r for r in rows if r["misfit_line"] is None]
+    unwarned = [r for r in rows if not warned(r)]
     chance = sum(1 - 0.95 ** sum(p["status"] == "fitted" for p in r["parameters"])
                  for r in unwarned)
     held = [r["heldout"] for r in rows]
@@ -303,12 +317,16 @@ def summarise(rows: list[dict], departures, seed: int) -> dict:
             "parameter_judgements_unwarned": sum(len(r["parameters"]) for r in unwarned),
             "by_departure": by_departure,
             "draws_with_misfit_line": sum(r["misfit_line"] is not None for r in rows),
+            "draws_with_instrument_warning": sum(r.get("instrument_warning") is not None
+                                                 for r in rows),
             "per_parameter": per_parameter, "seed": seed}
 
 
 #: how a draw's line prints a field of its row (any other: as it is)
 PRINTED = {"chi2_per_nu": lambda v: "" if v is None else f"{v:.3g}",
-           "misfit_line": lambda v: "yes" if v else "no", "missed": lambda v: "|".join(v) or "-",
+           "misfit_line": lambda v: "yes" if v else "no",
+           "instrument_warning": lambda v: "yes" if v else "no",
+           "missed": lambda v: "|".join(v) or "-",
            "far": lambda v: "|".join(v) or "-", "message": lambda v: v or ""}
 
 

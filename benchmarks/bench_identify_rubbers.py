@@ -33,8 +33,9 @@ Every parameter reported with an interval is judged against the truth as
 ``bench_identify_coverage.judge`` does (the rubber, where one scale, against the truth's
 equivalent scale at Silastic S's ratio over these runs, :func:`equivalent_scale`, and the true
 C01/C10 against the ratio interval the note prints). A draw is ``covered`` when every interval
-holds the truth, ``warned`` when some miss and identify printed a misfit line, ``SILENT`` when
-some miss without one, ``refused`` when identify raised ``ValueError`` (its message recorded),
+holds the truth, ``warned`` when some miss and identify printed a misfit line or a warning
+about the instruments (``bench_identify_coverage.instrument_warning``), ``SILENT`` when some
+miss without either, ``refused`` when identify raised ``ValueError`` (its message recorded),
 ``crashed`` on any other exception (a defect). Prints one row per draw; ``--out`` writes the
 summary, one row per draw (truth, verdict, chi2/nu, seconds), every draw's parameters, notes
 and plan, and provenance.
@@ -54,7 +55,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
-from bench_identify_coverage import judge, truths
+from bench_identify_coverage import instrument_warning, judge, truths
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
@@ -214,8 +215,8 @@ def one(muscle: dict, out: Path) -> dict:
     runs_plan = plan(muscle)
     row = {"seed": muscle["seed"], "truth": truth_text(muscle), "muscle": muscle,
            "plan": runs_plan, "verdict": None, "chi2_per_nu": None, "missed": [], "far": [],
-           "misfit_line": None, "message": None, "notes": [], "parameters": [],
-           "rubber_separated": None, "seconds": None}
+           "misfit_line": None, "instrument_warning": None, "message": None, "notes": [],
+           "parameters": [], "rubber_separated": None, "seconds": None}
     start = time.perf_counter()
     try:
         runs = acquire_blind(muscle, runs_plan, out)
@@ -257,14 +258,18 @@ def identified(runs, row: dict):
 
 def judged(row: dict, result, muscle: dict, truth: dict, seconds: float, **extra) -> dict:
     """``row`` with the identification ``result`` judged against ``truth``: covered (every
-    interval holds it), warned (one misses, the misfit line said) or SILENT; and ``extra``."""
+    interval holds it), warned (one misses, the misfit line or a warning about the instruments
+    said) or SILENT; and ``extra``."""
     parameters = judge(result, muscle, None, truth)
     missed = [p["parameter"] for p in parameters if not p["covered"]]
     misfit = result.goodness.line() if result.goodness else None
-    row.update(verdict="covered" if not missed else "warned" if misfit else "SILENT",
+    instrument = instrument_warning(result)
+    row.update(verdict="covered" if not missed else "warned" if misfit or instrument
+               else "SILENT",
                chi2_per_nu=result.goodness.reduced if result.goodness else None,
                missed=missed, far=[p["parameter"] for p in parameters if p["far"]],
-               misfit_line=misfit, notes=result.notes, parameters=parameters,
+               misfit_line=misfit, instrument_warning=instrument, notes=result.notes,
+               parameters=parameters,
                seconds=round(seconds, 1), **extra)
     return row
 
@@ -280,6 +285,7 @@ def summarise(rows: list[dict]) -> dict:
     # instruments of a bench that has nothing wrong
     out["covered_with_misfit_line"] = sum(r["verdict"] == "covered" and r["misfit_line"]
                                           is not None for r in rows)
+    out["instrument_warning"] = sum(r.get("instrument_warning") is not None for r in rows)
     if missed:
         theta = [r["muscle"]["truth"]["theta0_deg"] for r in missed]
         ratio = [r["muscle"]["truth"]["C01_MPa"] / r["muscle"]["truth"]["C10_MPa"]
@@ -295,6 +301,7 @@ def table(rows: list[dict]) -> list[dict]:
              "top_bar": r["plan"]["pressures_bar"][-1], "verdict": r["verdict"],
              "chi2_per_nu": None if r["chi2_per_nu"] is None else round(r["chi2_per_nu"], 3),
              "misfit_line": "yes" if r["misfit_line"] else "no",
+             "instrument_warning": "yes" if r.get("instrument_warning") else "no",
              "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
 
 

@@ -31,9 +31,10 @@ Every parameter reported with an interval is judged against the truth as
 ``bench_identify_coverage.judge`` does (the rubber, where one scale, against the truth's
 equivalent scale at the assumed ratio; the monitor's offset against the true offset, not judged
 under a gain). A draw is ``covered`` when every interval holds the truth, ``warned`` when some
-miss and identify printed a misfit line, ``SILENT`` when some miss without one. Prints one row
-per draw; ``--out`` writes the draws x departures table, every draw's parameters and notes, the
-seeds and provenance.
+miss and identify printed a misfit line or a warning about the instruments
+(``bench_identify_coverage.instrument_warning``), ``SILENT`` when some miss without either.
+Prints one row per draw; ``--out`` writes the draws x departures table, every draw's
+parameters and notes, the seeds and provenance.
 """
 
 from __future__ import annotations
@@ -46,7 +47,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-from bench_identify_coverage import each_draw, judge
+from bench_identify_coverage import each_draw, instrument_warning, judge
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
@@ -167,7 +168,8 @@ def one(muscle: dict, out: Path, config, params: str | None = None) -> dict:
     except ValueError as exc:  # refused in one line, as the command would
         return {"departure": muscle["departure"], "seed": muscle["seed"],
                 "value": departure_value(muscle), "verdict": "refused", "chi2_per_nu": None,
-                "missed": [], "far": [], "misfit_line": None, "zero_line": None,
+                "missed": [], "far": [], "misfit_line": None, "instrument_warning": None,
+                "zero_line": None,
                 "refused": str(exc), "notes": [], "parameters": [], "muscle": muscle,
                 "seconds": round(time.perf_counter() - start, 1)}
     seconds = time.perf_counter() - start
@@ -176,11 +178,13 @@ def one(muscle: dict, out: Path, config, params: str | None = None) -> dict:
     far = [p["parameter"] for p in parameters if p["far"]]
     misfit = result.goodness.line() if result.goodness else None
     zero = result.goodness.zero_line() if result.goodness else None
-    verdict = "covered" if not missed else "warned" if misfit else "SILENT"
+    instrument = instrument_warning(result)
+    verdict = "covered" if not missed else "warned" if misfit or instrument else "SILENT"
     return {"departure": muscle["departure"], "seed": muscle["seed"],
             "value": departure_value(muscle), "verdict": verdict,
             "chi2_per_nu": result.goodness.reduced if result.goodness else None,
-            "missed": missed, "far": far, "misfit_line": misfit, "zero_line": zero,
+            "missed": missed, "far": far, "misfit_line": misfit,
+            "instrument_warning": instrument, "zero_line": zero,
             "notes": result.notes,
             "parameters": parameters, "muscle": muscle, "seconds": round(seconds, 1)}
 

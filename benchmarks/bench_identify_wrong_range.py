@@ -30,11 +30,12 @@ the truth and identified by ``identify(runs)``. Every parameter reported with an
 judged against the truth as ``bench_identify_rubbers`` judges it (the rubber, where one scale,
 against the truth's equivalent scale at Silastic S's ratio over the runs' true lengths and
 eps). A draw is ``covered`` when every interval holds the truth, ``warned`` when some miss and
-identify printed a misfit line, ``SILENT`` when some miss without one, ``refused`` or
-``crashed`` as there; ``misfit_line`` says whether one was printed at all. Prints one row per
-draw and the counts per departure; ``--out`` writes them (``rows``: one per draw, with what a
-misfit's verdict names first; ``summary``: per departure), every draw's parameters, notes and
-verdict line, the seeds and provenance.
+identify printed a misfit line or a warning about the instruments (a creep it cannot tell from
+the load cell's gain), ``SILENT`` when some miss without either, ``refused`` or ``crashed`` as
+there; ``misfit_line`` and ``instrument_warning`` say whether each was printed at all.
+Prints one row per draw and the counts per departure; ``--out`` writes them (``rows``: one per
+draw, with what its verdict names first; ``summary``: per departure), every draw's
+parameters, notes and verdict line, the seeds and provenance.
 """
 
 from __future__ import annotations
@@ -64,7 +65,7 @@ FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid")
 #: the fields of a draw's printed line
 COLUMNS = ("seed", "departure", "value", "truth", "verdict", "chi2_per_nu", "misfit_line",
-           "missed", "far", "seconds", "message")
+           "instrument_warning", "missed", "far", "seconds", "message")
 
 
 def depart(muscle: dict, departure: str) -> dict:
@@ -133,8 +134,8 @@ def one(muscle: dict, out: Path) -> dict:
     row = {"seed": muscle["seed"], "departure": muscle["departure"],
            "value": departure_value(muscle), "truth": truth_text(muscle), "muscle": muscle,
            "plan": declared, "verdict": None, "chi2_per_nu": None, "missed": [], "far": [],
-           "misfit_line": None, "message": None, "notes": [], "parameters": [],
-           "seconds": None}
+           "misfit_line": None, "instrument_warning": None, "message": None, "notes": [],
+           "parameters": [], "seconds": None}
     try:
         runs = acquire_blind(muscle, declared, out)
     except Exception as exc:  # the simulator's FE or the bench: no runs, no identification
@@ -154,7 +155,7 @@ def one(muscle: dict, out: Path) -> dict:
 
 def summarise(rows: list[dict]) -> list[dict]:
     """Per departure: the draws, and how many were covered, warned, silent, refused, crashed or
-    skipped, and printed a misfit line."""
+    skipped, and printed a misfit line or a warning about the instruments."""
     table = []
     for d in dict.fromkeys(r["departure"] for r in rows):
         mine = [r for r in rows if r["departure"] == d]
@@ -162,28 +163,35 @@ def summarise(rows: list[dict]) -> list[dict]:
                       **{v.lower(): sum(r["verdict"] == v for r in mine)
                          for v in ("covered", "warned", "SILENT", "refused", "crashed",
                                    "skipped")},
-                      "misfit_line": sum(r["misfit_line"] is not None for r in mine)})
+                      "misfit_line": sum(r["misfit_line"] is not None for r in mine),
+                      "instrument_warning": sum(r["instrument_warning"] is not None
+                                                for r in mine)})
     return table
 
 
 def table(rows: list[dict]) -> list[dict]:
     """One row per draw: its departure and truth, the verdict, chi2/nu, whether a misfit line
-    was printed and what it names first, what missed, seconds."""
+    or a warning about the instruments was printed and what the verdict names first, what
+    missed, seconds."""
     return [{"seed": r["seed"], "departure": r["departure"], "value": r["value"],
              "truth": r["truth"], "verdict": r["verdict"],
              "chi2_per_nu": None if r["chi2_per_nu"] is None else float(f"{r['chi2_per_nu']:.3g}"),
              "misfit_line": "yes" if r["misfit_line"] else "no",
+             "instrument_warning": "yes" if r["instrument_warning"] else "no",
              "verdict_first": first_said(r.get("verdict_line")),
              "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
 
 
 def first_said(verdict: str | None) -> str:
-    """What a misfit's verdict sends the reader to first (the rest length, the braid, the
-    rubber's ratio, the declared tolerances, the surrogate's box), or '-'."""
-    if not verdict or "; first, " not in verdict:
+    """What a verdict sends the reader to first (the rest length, the braid, the rubber's
+    ratio, the declared tolerances, the surrogate's box; within the noise, the load cell a
+    creep may be), or '-'."""
+    marks = [m for m in ("; first, ", ", but first, ") if m in (verdict or "")]
+    if not marks:
         return "-"
-    first = verdict.split("; first, ")[1]
-    for key, said in (("rest length", "rest length or gap"), ("braid", "braid"),
+    first = verdict.split(marks[0])[1]
+    for key, said in (("load cell", "load cell or creep"),
+                      ("rest length", "rest length or gap"), ("braid", "braid"),
                       ("declared tolerances", "declared tolerances"),
                       ("C01/C10 held", "rubber ratio"), ("surrogate's box", "search model")):
         if key in first.split(";")[0]:

@@ -2652,16 +2652,32 @@ def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
     covered = [d for d in gains if d["verdict"] == "covered"]
     assert (f"With both gains off, {len(covered)} were covered "
             f"({sum(d['misfit_line'] is not None for d in covered)} with a misfit line)") in said
-    (silent,) = [d for d in draws if d["verdict"] == "SILENT"]
-    truth = silent["muscle"]["truth"]
-    theta = next(p for p in silent["parameters"] if p["parameter"] == "theta0_deg")
-    assert silent["missed"] == ["theta0_deg"] and silent["misfit_line"] is None
-    assert (f"seed {silent['seed']}, the load cell {100 * (1 - truth['loadcell_gain']):.2f} % "
+    (missed,) = [d for d in gains if d["verdict"] != "covered"]
+    truth = missed["muscle"]["truth"]
+    theta = next(p for p in missed["parameters"] if p["parameter"] == "theta0_deg")
+    creep = next(p for p in missed["parameters"] if p["parameter"] == "creep_fraction")
+    share = f"{100 * creep['value']:.2g} %"
+    assert missed["missed"] == ["theta0_deg"] and missed["misfit_line"] is None
+    assert missed["verdict"] == "warned" and missed["instrument_warning"]
+    assert (f"within their noise (chi2/nu {missed['chi2_per_nu']:.3g}), but first, these runs "
+            f"cannot tell a creep of {share} over before the holds start from a load cell "
+            f"reading {share} low") in missed["verdict_line"]
+    assert (f"seed {missed['seed']}, the load cell {100 * (1 - truth['loadcell_gain']):.2f} % "
             f"low (17 times its declared tolerance) and the monitor "
             f"{100 * (truth['monitor_gain'] - 1):.2f} % high, fits within the noise (chi2/nu "
-            f"{silent['chi2_per_nu']:.3g}), and theta0's interval ({theta['ci_low']:.2f}-"
+            f"{missed['chi2_per_nu']:.3g}), and theta0's interval ({theta['ci_low']:.2f}-"
             f"{theta['ci_high']:.2f} deg) misses the true {theta['truth']:.2f} deg by "
-            f"{theta['ci_low'] - theta['truth']:.2f} deg") in said
+            f"{theta['ci_low'] - theta['truth']:.2f} deg: the fit took the cell's gain for a "
+            f"creep of {share} with creep_tau_s 1 s, the shortest searched, and the verdict "
+            "says first that the runs cannot tell such a creep from a load cell reading "
+            f"{share} low") in said
+    told = [d for d in draws if d["instrument_warning"]]
+    first = [d for d in told if ", but first, these runs cannot tell a creep" in
+             d["verdict_line"]]
+    assert (f"That warning is printed on {len(told)} of the {len(draws)} draws "
+            f"({sum(d['departure'] == 'gains' for d in told)} with both gains off, "
+            f"{sum(d['departure'] == 'sliding braid' for d in told)} sliding sleeves), on "
+            f"{len(first)} of them first in a verdict within the noise") in said
     (left_out,) = [d for d in draws if any(n.startswith("creep not identifiable from these "
                                                       "runs: ") for n in d["notes"])]
     note = next(n for n in left_out["notes"] if n.startswith("creep not identifiable"))

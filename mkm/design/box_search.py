@@ -632,9 +632,10 @@ def box_edges(row, box: dict, calibration: Calibration | None = None) -> list[st
     end a design ``row`` sits on, as ``D0 = 30 mm (the lower end of 30:50)``, and its rubber
     where several were searched and it is the softest or the stiffest of them (by C10; the
     ``calibrated`` one is ``calibration``'s): there a larger box might hold a better design.
-    An end at the practical range's limit is none: the search refuses a box beyond it."""
+    An end at the practical range's limit or beyond it is none (:func:`range_limits`): no box
+    is widened past that limit."""
     edges = [f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})"
-             for name, at, unit, end, (low, high), at_limit in _ends(row, box) if not at_limit]
+             for name, at, unit, end, (low, high), limit in _ends(row, box) if limit is None]
     end, C10 = _rubber_end(row, box, calibration)
     if end:
         searched = ", ".join(f"{r} {c:.4g}" for r, c in C10.items())
@@ -658,11 +659,12 @@ def larger_box(row, box: dict, calibration: Calibration | None = None,
                what: str = "a better design") -> str:
     """``a larger box might hold WHAT: widen it, e.g. --D0 20:50 --t0 1:4``: the options that
     widen each searched range whose end a design ``row`` sits on (:func:`box_edges`), that end
-    moved out by half the range's span, no further than the practical range's limit (a search
-    refuses a box beyond it), and ``--rubber`` where the rubber is an end of those searched."""
+    moved out by half the range's span, no further than the practical range's limit (an end at
+    that limit or beyond it is widened no further: :func:`range_limits`), and ``--rubber``
+    where the rubber is an end of those searched."""
     options = []
-    for name, _, _, end, (low, high), at_limit in _ends(row, box):
-        if not at_limit:
+    for name, _, _, end, (low, high), limit in _ends(row, box):
+        if limit is None:
             key = next(k for k, n in BOX_NAMES.items() if n == name)
             limit_low, limit_high = getattr(PRACTICAL_RANGE, key)
             half = (high - low) / 2
@@ -677,26 +679,33 @@ def larger_box(row, box: dict, calibration: Calibration | None = None,
 
 def range_limits(row, box: dict) -> list[str]:
     """The searched ranges of ``box`` whose end a design ``row`` sits on where that end is the
-    practical range's limit (which :func:`box_edges` leaves out: no search goes beyond it), as
-    ``t0 = 0.5 mm, its lower limit``."""
-    return [f"{name} = {at:.4g} {unit}, its {end} limit"
-            for name, at, unit, end, _, at_limit in _ends(row, box) if at_limit]
+    practical range's limit or beyond it (which :func:`box_edges` leaves out: no box is widened
+    past that limit), as ``t0 = 0.5 mm, its lower limit`` or ``theta0 = 45 deg, beyond its
+    upper limit 40 deg``."""
+    return [f"{name} = {at:.4g} {unit}, " + (
+                f"its {end} limit" if abs(at - limit) <= 1e-6 * (high - low) else
+                f"beyond its {end} limit {limit:g} {unit}")
+            for name, at, unit, end, (low, high), limit in _ends(row, box) if limit is not None]
 
 
 def _ends(row, box: dict):
-    """``(name, value, unit, "lower" or "upper", (low, high), on the practical range's
-    limit)`` of each searched range of ``box`` (a fixed value is no range) whose end a design
-    ``row`` sits on."""
+    """``(name, value, unit, "lower" or "upper", (low, high), limit)`` of each searched range
+    of ``box`` (a fixed value is no range) whose end a design ``row`` sits on; ``limit`` is the
+    practical range's limit on that side where the end is at it or beyond it (a lower end at
+    or below the lower limit, an upper end at or above the upper one), else None."""
     for key, name in BOX_NAMES.items():
         low, high = box.get(key, (0.0, 0.0))
         if not high > low:
             continue
         at, unit = float(row[key]), "deg" if key.endswith("deg") else "mm"
         tol = 1e-6 * (high - low)  # the grids hold both ends exactly
-        for end, bound, limit in zip(("lower", "upper"), (low, high),
-                                     getattr(PRACTICAL_RANGE, key), strict=True):
-            if abs(at - bound) <= tol:
-                yield name, at, unit, end, (low, high), abs(bound - limit) <= tol
+        limit_low, limit_high = getattr(PRACTICAL_RANGE, key)
+        if abs(at - low) <= tol:
+            yield name, at, unit, "lower", (low, high), (limit_low if low <= limit_low + tol
+                                                         else None)
+        if abs(at - high) <= tol:
+            yield name, at, unit, "upper", (low, high), (limit_high if high >= limit_high - tol
+                                                          else None)
 
 
 def span_text(low: float, high: float) -> str:

@@ -154,8 +154,10 @@ class DesignResult:
                          f"{box_text(ranges)}: {', '.join(edges)}; "
                          + larger_box(best, s.constraints, s.calibration))
         if best is not None and (limits := range_limits(best, s.constraints)):
-            notes.append(f"the chosen design sits on the practical range's limit: "
-                         f"{'; '.join(limits)}; a design beyond it might do better, but no "
+            beyond = any(", beyond its " in limit for limit in limits)
+            notes.append(f"the chosen design sits on the practical range's limit"
+                         f"{' or beyond it' if beyond else ''}: {'; '.join(limits)}; a design "
+                         f"{'further out' if beyond else 'beyond it'} might do better, but no "
                          "model is validated there (`mkm models` states the range)")
         if best is not None and "all:probability_below_target" in str(best["flags"]):
             notes.append(f"no verified design holds every requirement with the "

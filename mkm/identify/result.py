@@ -104,6 +104,9 @@ class Identification:
     model_form: dict = field(default_factory=dict)
     #: the command-line options that fit as asked again (mkm.identify.procedure.command_options)
     options: list[str] = field(default_factory=list)
+    #: what the runs cannot tell from an instrument's error, each with its note (``said``) and
+    #: the verdict's advice (mkm.identify.procedure.creep_or_gain)
+    instrument_warnings: list[dict] = field(default_factory=list)
 
     @property
     def values(self) -> dict[str, float]:
@@ -363,6 +366,7 @@ class Identification:
                                 "candidates": self.candidates},
             "searched_with": self.searched_with, "model": self.model,
             "fe_confirmation": self.confirmation, "notes": self.notes,
+            "instrument_warnings": self.instrument_warnings,
             "goodness_of_fit": self.goodness.record() if self.goodness else None,
             "leave_one_run_out": self.checks_table().to_dict(orient="records"),
             "band": self.band(),
@@ -429,9 +433,14 @@ class Identification:
                     "largest |Err%| above against the instruments' accuracy before using "
                     "calibration.json")
         if not g.misfit:
+            ready = "calibration.json is ready for --calibration (mkm report, design, fem solve)"
+            if self.instrument_warnings:
+                return (f"verdict: the model follows these runs within their noise (chi2/nu "
+                        f"{g.reduced:.3g}), but first, "
+                        + "; ".join(w["verdict"] for w in self.instrument_warnings)
+                        + f"; if it is, {ready}")
             return (f"verdict: the model follows these runs within their noise (chi2/nu "
-                    f"{g.reduced:.3g}): calibration.json is ready for --calibration (mkm "
-                    "report, design, fem solve)")
+                    f"{g.reduced:.3g}): {ready}")
         return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"
                 f"{g.birge_ratio:.3g} and the estimates may be biased; "
                 f"{_first(self.rubber, g, self.groups)}the notes above name what the runs show "
@@ -486,7 +495,8 @@ class Identification:
                       "interval_method": record["interval_method"], "dropped": self.dropped,
                       "notes": self.notes, "leave_one_run_out": record["leave_one_run_out"],
                       "misfit": record["goodness_of_fit"], "band": record["band"],
-                      "model_form": record["model_form"], "options": record["options"]}
+                      "model_form": record["model_form"], "options": record["options"],
+                      "instrument_warnings": record["instrument_warnings"]}
         entry = {**_entry(values["theta0_deg"], model, static.entry.module, reference),
                  **material, **gap, **terms, "target": "identify", "identified": identified}
         store_calibration(files["calibration"], model.calibration_key, entry)

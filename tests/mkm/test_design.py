@@ -966,6 +966,25 @@ def test_a_design_on_the_practical_ranges_limit_says_no_model_is_validated_beyon
     assert range_limits({**row, "t0_mm": 0.6, "theta0_deg": 20.0}, box) == []
 
 
+def test_an_end_beyond_the_practical_range_is_not_widened_back_into_it():
+    # a box searched beyond the practical range (theta0 41:45, L0 1100:1500: the FE searches
+    # there) had its upper end 'widened' to the limit below it: --theta0 41:40, --L0 1100:1000
+    from mkm.design.box_search import box_edges, range_limits
+
+    box = {"D0_mm": (30.0, 34.0), "t0_mm": (2.0, 3.0), "L0_mm": (1100.0, 1500.0),
+           "theta0_deg": (41.0, 45.0)}
+    row = {"D0_mm": 30.0, "t0_mm": 2.5, "L0_mm": 1500.0, "theta0_deg": 45.0}
+    assert larger_box(row, box) == ("a larger box might hold a better design: widen it, e.g. "
+                                    "--D0 28:34")
+    assert box_edges(row, box) == ["D0 = 30 mm (the lower end of 30:34)"]
+    assert range_limits(row, box) == ["L0 = 1500 mm, beyond its upper limit 1000 mm",
+                                      "theta0 = 45 deg, beyond its upper limit 40 deg"]
+    # its lower end is widened towards the range as any end inside it is
+    assert larger_box({**row, "L0_mm": 1100.0, "theta0_deg": 41.0}, box) == (
+        "a larger box might hold a better design: widen it, e.g. --D0 28:34 --L0 900:1500 "
+        "--theta0 39:45")
+
+
 def test_a_calibrated_rubber_outside_the_practical_range_is_said(tmp_path):
     """A muscle identified as softer than any rubber of the practical range (an imported table
     fitted to 0.2 x Silastic S, C10 0.0139 MPa) gave a design with no word that its rubber lies

@@ -235,7 +235,7 @@ def _verdict(goodness, rubber: dict) -> str:
     from mkm.identify.result import Identification
 
     return Identification._verdict_line(SimpleNamespace(goodness=goodness, rubber=rubber,
-                                                        groups=GROUPS))
+                                                        groups=GROUPS, instrument_warnings=[]))
 
 
 def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
@@ -366,11 +366,11 @@ def test_a_creep_left_out_for_not_converging_says_where_its_fit_stopped():
 
 def bench_runs(out, truth: dict, eps: tuple, pressures_bar: tuple, seeds, *,
                hysteresis_fraction: float, mesh: str = "coarse", model: str = "axisym",
-               **sections) -> list:
+               creep_fraction: float = 0.0, creep_tau_s: float = 30.0, **sections) -> list:
     """Blind runs of the muscle ``truth`` ([sim.truth]) on the ``model`` bench (the FE's at
-    ``mesh``), one per shortening of ``eps`` and seed of ``seeds``, no creep; ``sections``: the
-    configuration's tables laid over the packaged ones (the muscle, the load cell, the
-    regulator...)."""
+    ``mesh``), one per shortening of ``eps`` and seed of ``seeds``, no creep unless asked;
+    ``sections``: the configuration's tables laid over the packaged ones (the muscle, the load
+    cell, the regulator...)."""
     from mkm.bench.config import load_config
     from mkm.bench.run import acquire
     from mkm.bench.sim_settings import remove_simulator_settings
@@ -381,13 +381,93 @@ def bench_runs(out, truth: dict, eps: tuple, pressures_bar: tuple, seeds, *,
             **sections,
             sequence={"pressures_bar": pressures_bar, "preconditioning_cycles": 0},
             sim={"model": model, "fe_mesh": mesh, "seed": seed,
-                 "hysteresis_fraction": hysteresis_fraction, "creep_fraction": 0.0,
-                 "truth": truth})
+                 "hysteresis_fraction": hysteresis_fraction, "creep_fraction": creep_fraction,
+                 "creep_tau_s": creep_tau_s, "truth": truth})
         result = acquire(config, out_root=out, notify=lambda message: None)
         assert result.status == "complete"
         remove_simulator_settings(result.path)
         paths.append(result.path)
     return paths
+
+
+def draw_20261601(out, truth: dict, **sim) -> list:
+    """bench_identify_wrong_range's seed 20261601 (a 32 mm tube to 8 bar on a 1000 kg cell, its
+    three eps) on the thick-wall bench, its rubber declared at its ratio (so that the ratio
+    Silastic S's would be is not what the fit lacks), with ``truth``'s instruments."""
+    return bench_runs(out, {"theta0_deg": 28.0388, "C10_MPa": 0.4485, "C01_MPa": 0.3001,
+                            **truth}, (0.0, 0.1047, 0.2093), steps_to(8.0),
+                      (20261601, 20262601, 20263601), hysteresis_fraction=0.00287,
+                      model="thickwall",
+                      muscle={"id": "gain-off", "D0_mm": 31.92, "t0_mm": 2.79, "L0_mm": 145.6,
+                              "C10_MPa": 0.36, "C01_MPa": 0.24},
+                      loadcell={"capacity_N": 9806.65, "sensitivity_N_per_V": 980.665},
+                      regulator={"max_pressure_bar": 8.0, "full_scale_bar": 9.0,
+                                 "monitor_accuracy_bar": 0.09},
+                      safety={"tare_max_shift_N": 100.0, "tare_max_std_N": 5.0,
+                              "vent_below_bar": 0.18}, **sim)
+
+
+def test_a_creep_over_before_the_holds_start_is_said_to_be_a_load_cell_gain_as_well(
+        tmp_path, mkm_run):
+    """bench_identify_wrong_range's seed 20261601: a load cell reading 1.75 % low and a
+    monitor 0.64 % high were fitted within the noise with a creep of 1.7 % whose time constant
+    sat at 1 s, the shortest searched, and the verdict said calibration.json was ready, theta0
+    0.03 deg outside its interval. A creep over before the holds start is, to the runs, the
+    cell reading that much low from its first sample: the verdict says so first, with what to
+    do, and identification.json records it for a program."""
+    import json
+
+    runs = draw_20261601(tmp_path / "runs", {"loadcell_gain": 0.98253, "monitor_gain": 1.0064})
+    code, out, err = mkm_run(["identify", *map(str, runs), "--model", "thickwall", "--search",
+                              "model", "--no-progress", "--out", str(tmp_path / "id")])
+    assert code == 0 and err == "", err
+    record = json.loads((tmp_path / "id" / "identification.json").read_text(encoding="utf-8"))
+    fitted = {p["parameter"]: p for p in record["parameters"]}
+    share = fitted["creep_fraction"]["value"]
+    # the cell's 1.75 % and some of the monitor's gain, which bends the curve as creep cannot
+    assert 0.0175 <= share <= 0.03 and fitted["creep_tau_s"]["value"] == pytest.approx(1.0)
+    assert record["goodness_of_fit"]["misfit_line"] is None
+    percent = f"{100 * share:.2g} %"
+    assert out.splitlines()[-2] == (
+        f"verdict: the model follows these runs within their noise (chi2/nu "
+        f"{record['goodness_of_fit']['chi2_per_nu']:.3g}), but first, these runs cannot tell "
+        f"a creep of {percent} over before the holds start from a load cell reading {percent} "
+        f"low (the note above): if this muscle is not expected to creep by {percent}, "
+        "calibrate the load cell (mkm calibrate-loadcell) and identify again; if it is, "
+        "calibration.json is ready for --calibration (mkm report, design, fem solve)")
+    (warning,) = record["instrument_warnings"]
+    assert warning["what"] == "creep or load cell gain"
+    assert warning["loadcell_reads_low_fraction"] == share
+    assert f"  note: {warning['said']}" in out.splitlines()
+    assert warning["said"] == (
+        f"creep or load cell: the fitted creep, {percent} of the force with creep_tau_s 1 s "
+        "(the runs allow 1 s, the shortest searched), may be over before the holds start, and "
+        f"such a creep is, to these runs, the load cell reading {percent} low from its first "
+        "sample (its declared tolerance +-0.1 %): they cannot tell the two apart; if this "
+        f"muscle is not expected to creep by {percent}, calibrate the load cell (mkm "
+        "calibrate-loadcell) and identify again")
+    calibration = json.loads((tmp_path / "id" / "calibration.json").read_text(encoding="utf-8"))
+    (entry,) = [e for e in calibration.values() if isinstance(e, dict) and "identified" in e]
+    assert entry["identified"]["instrument_warnings"] == record["instrument_warnings"]
+
+
+def test_a_slow_creep_on_a_clean_bench_keeps_its_ready_verdict(tmp_path):
+    """The same muscle creeping 2 % with a 30 s time constant on a bench with nothing wrong:
+    the holds tell the time constant (its interval far above 1 s), so the creep is the
+    muscle's, and the verdict stays ready, without the load cell's warning."""
+    from mkm.identify import identify
+
+    runs = draw_20261601(tmp_path, {}, creep_fraction=0.02, creep_tau_s=30.0)
+    result = identify(runs, model="thickwall", search="model")
+    table = result.parameters().set_index("parameter")
+    assert table.loc["creep_tau_s", "ci_low"] <= 30.0 <= table.loc["creep_tau_s", "ci_high"]
+    assert table.loc["creep_tau_s", "ci_low"] > 5.0
+    assert table.loc["creep_fraction", "ci_low"] <= 0.02 <= table.loc["creep_fraction",
+                                                                      "ci_high"]
+    assert result.instrument_warnings == []
+    assert result._verdict_line().endswith("calibration.json is ready for --calibration (mkm "
+                                           "report, design, fem solve)")
+    assert ", but first, " not in result._verdict_line()
 
 
 def steps_to(top_bar: float) -> tuple:
