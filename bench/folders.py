@@ -8,10 +8,10 @@ shell expands it), so every command that takes run folders passes its arguments 
 from __future__ import annotations
 
 import glob
-import os
 import re
 from pathlib import Path
 
+from mkm.bench.settings import separator_hint as _separator_hint
 from mkm.bench.tables import TEXT_SUFFIXES, WORKBOOK_SUFFIXES
 
 TABLE_SUFFIXES = (*TEXT_SUFFIXES, *WORKBOOK_SUFFIXES)
@@ -40,14 +40,6 @@ def _children(folder: Path) -> list[Path]:
     """The run folders directly inside ``folder``, oldest first (:func:`run_order`)."""
     return sorted((p for p in folder.iterdir() if p.is_dir() and is_run_folder(p)),
                   key=run_order)
-
-
-def _separator_hint(argument: str) -> str:
-    """What a Windows path typed on another system needs ("runs\\R": one name here)."""
-    if os.sep != "/" or "\\" not in argument:
-        return ""
-    posix = argument.replace("\\", "/")
-    return f"; on this system folders are separated by /: {posix!r}?"
 
 
 def run_folders(arguments) -> list[Path]:

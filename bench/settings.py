@@ -4,13 +4,16 @@
 ``config.toml``) and turns any malformed text, including nesting deep enough to exhaust the
 parser's recursion, into one ``ValueError``. :func:`typed_section` fills a frozen dataclass from
 one table: unknown keys, missing required keys and wrong types are named with their
-``section.key``; the dataclass's own ``check()`` then validates the values.
+``section.key``; the dataclass's own ``check()`` then validates the values. :func:`saved_text`
+decodes a file as a Windows program may have saved it (the configurations, design specs and
+tables a user edits).
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import re
 import tomllib
 import typing
@@ -22,6 +25,36 @@ from typing import Any
 from mkm.core.ranges import parse_pressures
 
 MAX_TEXT_CHARS = 1_000_000  # a bench configuration is a few kB; beyond this it is not one
+
+#: the byte-order marks of UTF-16, which Notepad's "Unicode", Excel's "Unicode Text" and
+#: Windows PowerShell 5's ``>`` write
+UTF16_BOMS = (b"\xff\xfe", b"\xfe\xff")
+#: what may follow the last line: a DOS program's end-of-file mark (Ctrl-Z) and a logger's
+#: file written into space filled with NULs beforehand
+TEXT_END_PADDING = "\x00\x1a"
+
+
+def saved_text(data: bytes) -> str:
+    """The text of a file as a Windows program may have saved it: UTF-16 with its byte-order
+    mark, or without one (a logger's, a script's: a NUL in its first two bytes), else UTF-8
+    with or without its byte-order mark; a trailing Ctrl-Z or NUL padding is no text.
+    ``UnicodeDecodeError`` for bytes that are none of them (a Windows code page)."""
+    if data.startswith(UTF16_BOMS):
+        text = data.decode("utf-16", errors="replace")
+    elif b"\x00" in data[:2]:
+        text = data.decode("utf-16-le" if data[1:2] == b"\x00" else "utf-16-be",
+                           errors="replace")
+    else:
+        text = data.rstrip(TEXT_END_PADDING.encode()).decode("utf-8-sig")
+    return text.rstrip(TEXT_END_PADDING)
+
+
+def separator_hint(argument: str) -> str:
+    """What a Windows path typed on another system needs ("runs\\R": one name here)."""
+    if os.sep != "/" or "\\" not in argument:
+        return ""
+    posix = argument.replace("\\", "/")
+    return f"; on this system folders are separated by /: {posix!r}?"
 
 
 def read_toml(text: str, source: str) -> dict[str, Any]:
@@ -46,14 +79,19 @@ def read_toml_file(path: str | Path, what: str = "") -> tuple[str, dict[str, Any
         if path.is_dir():
             raise ValueError(f"{what}{shown} is a folder: expected a TOML file")
         if not path.is_file():
-            raise ValueError(f"{what}{shown} does not exist: expected a TOML file")
+            raise ValueError(f"{what}{shown} does not exist: expected a TOML file"
+                             f"{separator_hint(str(path))}")
         if path.stat().st_size > MAX_TEXT_CHARS * 4:
             raise ValueError(f"{what}{shown} is {path.stat().st_size} bytes: expected a TOML "
                              f"file of at most {MAX_TEXT_CHARS} characters")
-        text = path.read_text(encoding="utf-8-sig")  # a BOM: saved by a Windows editor
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ValueError(f"{what}{shown} cannot be read as UTF-8 text "
-                         f"({getattr(exc, 'strerror', None) or exc})") from None
+        # Notepad's BOM, its "Unicode" (UTF-16), a DOS editor's Ctrl-Z at the end
+        text = saved_text(path.read_bytes())
+    except OSError as exc:
+        raise ValueError(f"{what}{shown} cannot be read ({exc.strerror or exc})") from None
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{what}{shown} is not UTF-8 text (byte {exc.start + 1} is not, as "
+                         "a Windows code page saves an accented letter): save it as UTF-8 "
+                         "(Notepad: File, Save as, Encoding UTF-8)") from None
     return text, read_toml(text, f"{what}{path}")
 
 

@@ -35,6 +35,7 @@ from pathlib import Path
 
 import numpy as np
 
+from mkm.bench.settings import TEXT_END_PADDING, saved_text
 from mkm.core.guards import table_file
 
 #: the largest table read (rows below the header, over all sheets)
@@ -359,19 +360,10 @@ def read_tables(path: str | Path, sheet: str | None = None) -> list[RawTable]:
         raise ValueError(f"{path.name} is a zip archive (an .xlsx workbook?) under a "
                          f"{suffix} name: expected a text table; if it is a workbook, rename "
                          "it to .xlsx")
-    if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text" is UTF-16
-        text = data.decode("utf-16", errors="replace")
-    elif b"\x00" in data[:2]:  # UTF-16 without its byte order mark (a logger's, a script's)
-        text = data.decode("utf-16-le" if data[1:2] == b"\x00" else "utf-16-be",
-                           errors="replace")
-    else:
-        # a DOS program's end-of-file mark (Ctrl-Z) and a logger's file written into space
-        # filled with NULs beforehand end the text: no row
-        data = data.rstrip(b"\x00\x1a")
-        try:
-            text = data.decode("utf-8-sig")
-        except UnicodeDecodeError:
-            text = _windows_text(data)
+    try:
+        text = saved_text(data)  # Excel's "Unicode Text" is UTF-16
+    except UnicodeDecodeError:
+        text = _windows_text(data.rstrip(TEXT_END_PADDING.encode()))
     return [_text_table(path, text)]
 
 

@@ -89,6 +89,7 @@ from mkm.verdict import (
     AutoPick,
     advice_command,
     format_seconds,
+    friction_explains,
     gives_advice,
     model_label,
     muscle_advice,
@@ -996,7 +997,8 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     return verdict(label, r.summary, names, tolerance, choice, same,
                    _fe_err(r, names), muscle_advice(
                        path, identified, r.calibration.path.name if r.calibration else "",
-                       muscle_runs, fit, command_below, _advises_rest_length(r)),
+                       muscle_runs, fit, command_below, _advises_rest_length(r),
+                       [row["model"] for row in r.summary]),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
                    _shows_dynamics(r))
 
@@ -1090,7 +1092,8 @@ def _shared_commands(runs: list[_Run], names: dict, tolerance: float | None) -> 
     for r in runs:
         command = advice_command(*_advice_arguments(r, runs), _advice_options(r, runs))
         if command and gives_advice(r.summary, names, tolerance,
-                                    *_auto_pick(r, names, tolerance), _fe_err(r, names)):
+                                    *_auto_pick(r, names, tolerance), _fe_err(r, names)) \
+                and friction_explains(r.summary, tolerance) is None:
             commands[r.k] = command
     said = list(commands.values())
     return {k: c for k, c in commands.items() if said.count(c) > 1}

@@ -103,9 +103,31 @@ def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET,
             f"{row['worst_step']}; {others}{lacking})")
 
 
+def _is_friction(spec: str) -> bool:
+    """Whether a report's model ``spec`` is the friction rung (a static force with the
+    calibration's braid friction and creep)."""
+    from mkm.registry import parse_spec
+
+    try:
+        return parse_spec(spec).name == "friction"
+    except ValueError:
+        return False
+
+
+def friction_explains(summary: list[dict], tolerance: float | None) -> dict | None:
+    """The report's friction rung where it meets ``tolerance`` at every step (its row), else
+    None: the static models' distance from the run is then the braid friction and creep it
+    adds, and the calibration carries over to the run."""
+    row = next((r for r in summary if _is_friction(r["model"]) and _fully_valid(r)), None)
+    if row is None or tolerance is None or _err(row) > 100.0 * tolerance:
+        return None
+    return row
+
+
 def muscle_advice(run_path: str, identified: list[dict] | None = None,
                   calibration_name: str = "", muscle_runs=(), fit: dict | None = None,
-                  command_below: bool = False, at_rest_length: bool = False) -> str:
+                  command_below: bool = False, at_rest_length: bool = False,
+                  models=()) -> str:
     """What the FE model's distance from a run, beyond auto's bound, tells a reader: identify
     the muscle, from ``muscle_runs`` (its runs at hand, this one among them); or, where the
     report's calibration was identified (``identified``: its runs as :mod:`mkm.identify`
@@ -119,7 +141,9 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
     it concerns, so this one refers to it rather than repeating every run's path.
     ``at_rest_length``: the run is declared at its rest length and the command fits that length
     (a table's first length may be shortened already); where that fit is a misfit too (the
-    published DMSP-10-250's), the calibration of the shortened runs is the one to keep."""
+    published DMSP-10-250's), the calibration of the shortened runs is the one to keep.
+    ``models``: the report's model specs, which the ``--models`` it suggests to add the friction
+    rung to repeats."""
     command = advice_command(run_path, identified, muscle_runs, (fit or {}).get("options", ()))
     shown = "the mkm identify command below" if command_below else f"`{command}`"
     if not identified:
@@ -147,10 +171,13 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
                      "lack, are that distance" if terms else "these static models lack the "
                      "identified model's friction and creep")
             fits = "them within their" if len(identified) > 1 else "it within its"
+            models = list(models)
+            rung = ("the friction rung of this report has them" if any(map(_is_friction, models))
+                    else "add the rung that has them: --models "
+                    + (",".join([*models, "friction"]) if models else "friction,..."))
             return (f"although the calibration{name} was identified {where} and fits {fits} "
                     f"noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
-                    f"{lacks} (add the rung that has them: --models friction,...; identify's "
-                    "steps.csv has the steps predicted with them)")
+                    f"{lacks} ({rung}; identify's steps.csv has the steps predicted with them)")
         return (f"although the calibration{name} was identified {where}: the model does not "
                 f"fit {'them all' if len(identified) > 1 else 'it'} with one muscle (the "
                 "identification's misfit notes say where)")
@@ -269,6 +296,11 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
                else f"at least {max(auto_err - auto.bound_pct, 0.0):.2f} %")
         off = ("" if auto_same else f", from which it is {auto_err:.2f} % off"
                if math.isfinite(auto_err) else f" ({auto.name} is not among this report's models)")
+        if (rung := friction_explains(summary, tolerance)) is not None:
+            # the muscle agrees with the calibration: identifying it again would not help
+            rung_name = names[rung["model"]]
+            advice = (f"and the braid friction and creep {rung_name} adds to the static force "
+                      f"are that distance ({rung_name} is {_err(rung):.2f} % off)")
         return text + (f"{why}{off}: the FE model itself is {gap} off, more than that bound, "
                        f"{advice or muscle_advice('RUN_DIR')}.")
     if auto_same:

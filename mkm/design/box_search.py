@@ -34,9 +34,17 @@ from mkm.surrogate import kinds
 #: Search resolution: a coarse grid of 0.5 mm in D0 and 0.1 mm in t0 (the paper's box, 20 x
 #: 2 mm: 41 x 21 = 861 candidates per family), refined to 0.05 mm and 0.01 mm over the coarse
 #: cells around the best ``SEEDS`` coarse candidates (441 candidates each); 5 values across a
-#: range of L0 or theta0. A Gaussian-process surrogate answers each point with its std in
-#: microseconds (benchmarks/bench_design.py times the search: docs/measured/design.json).
+#: range of L0 or theta0, refined around the best design by halving steps down to
+#: ``AXIS_RESOLUTION`` (:func:`_refine_axes`). A Gaussian-process surrogate answers each point
+#: with its std in microseconds (benchmarks/bench_design.py times the search:
+#: docs/measured/design.json).
 COARSE_STEPS, D0_STEP_MM, T0_STEP_MM, SEEDS, AXIS_VALUES = (0.5, 0.1), 0.05, 0.01, 8, 5
+#: The finest step of a searched range of L0 [mm] or theta0 [deg]: 0.1 deg moves the outer
+#: diameter of a design by about 0.15 mm (1.4 mm per deg near the paper's muscle)
+AXIS_RESOLUTION = {"L0_mm": 1.0, "theta0_deg": 0.1}
+#: Coarse cells of D0 and t0 either side of the best design where a new L0 or theta0 is tried:
+#: a step of the angle moves the boundary of what meets a force by a few of them
+AXIS_NEIGHBOURHOOD_CELLS = 4
 #: Verified designs differ by at least 5 % of the box span in some searched parameter.
 MIN_SEPARATION = 0.05
 #: Surrogate uncertainty: the predictive standard deviation times auto's factor of the kind
@@ -328,18 +336,12 @@ def search(requirements, constraints: Constraints | dict | None = None,
     seeds = _seeds(coarse) if refine else coarse.iloc[:0]
     dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
     dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
-    fine = []
-    for _, seed in seeds.iterrows():
-        D0f = _axis((max(seed["D0_mm"] - dD0, box["D0_mm"][0]),
-                     min(seed["D0_mm"] + dD0, box["D0_mm"][1])), D0_STEP_MM)
-        t0f = _axis((max(seed["t0_mm"] - dt0, box["t0_mm"][0]),
-                     min(seed["t0_mm"] + dt0, box["t0_mm"][1])), T0_STEP_MM)
-        D0, t0 = _walls(*np.meshgrid(D0f, t0f, indexing="ij"))
-        fine.append(evaluate((seed["L0_mm"], seed["theta0_deg"], seed["rubber"]), D0, t0))
-    cand = pd.concat([coarse, *fine], ignore_index=True)
-    cand = cand.round({"D0_mm": 9, "t0_mm": 9}).drop_duplicates(
-        ["D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber"])
-    cand = _rank(cand, objective)
+    fine = [_fine(evaluate, _family(seed), seed, dD0, dt0, box)
+            for _, seed in seeds.iterrows()]
+    cand = _merge([coarse, *fine], objective)
+    if refine:
+        cand = _refine_axes(cand, evaluate, lambda f: _surrogate_for(spec, base, *f, calibration),
+                            box, D0c, t0c, objective)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
                     fe_search, spec.text, "; ".join(n for n in (searcher_note, rubber_note) if n),
@@ -347,6 +349,67 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
+
+
+def _family(row) -> tuple[float, float, str]:
+    """``(L0_mm, theta0_deg, rubber)`` of a candidate row: the surrogate that predicts it."""
+    return float(row["L0_mm"]), float(row["theta0_deg"]), row["rubber"]
+
+
+def _merge(frames, objective: str) -> pd.DataFrame:
+    """The candidates of ``frames``, each once, ranked by ``objective``."""
+    cand = pd.concat(frames, ignore_index=True).round({"D0_mm": 9, "t0_mm": 9})
+    return _rank(cand.drop_duplicates(["D0_mm", "t0_mm", "L0_mm", "theta0_deg", "rubber"]),
+                 objective)
+
+
+def _fine(evaluate, family, seed, dD0: float, dt0: float, box: dict) -> pd.DataFrame:
+    """The fine grid of ``family`` over the coarse cells around ``seed``'s D0 and t0."""
+    D0f = _axis((max(seed["D0_mm"] - dD0, box["D0_mm"][0]),
+                 min(seed["D0_mm"] + dD0, box["D0_mm"][1])), D0_STEP_MM)
+    t0f = _axis((max(seed["t0_mm"] - dt0, box["t0_mm"][0]),
+                 min(seed["t0_mm"] + dt0, box["t0_mm"][1])), T0_STEP_MM)
+    return evaluate(family, *_walls(*np.meshgrid(D0f, t0f, indexing="ij")))
+
+
+def _refine_axes(cand: pd.DataFrame, evaluate, surrogate_at, box: dict, D0c: np.ndarray,
+                 t0c: np.ndarray, objective: str) -> pd.DataFrame:
+    """``cand`` with the searched ranges of L0 and theta0 refined around the best design.
+
+    The coarse grid holds :data:`AXIS_VALUES` of each range, and the best design lies between
+    them as often as not (a braid angle between two of them meets a force with a narrower
+    tube). So, halving the step down to :data:`AXIS_RESOLUTION`, the best design's value one
+    step either way is tried: its coarse D0 x t0 neighbourhood
+    (:data:`AXIS_NEIGHBOURHOOD_CELLS`), then the fine grid around the best there.
+    ``surrogate_at(family)`` builds the surrogate of a family not yet searched."""
+    axes = [k for k in AXIS_RESOLUTION if box[k][1] > box[k][0]]
+    step = {k: (box[k][1] - box[k][0]) / (AXIS_VALUES - 1) for k in axes}
+    dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
+    dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
+    reach = AXIS_NEIGHBOURHOOD_CELLS + 1e-6
+    while any(step[k] > AXIS_RESOLUTION[k] for k in axes):
+        step = {k: v / 2 for k, v in step.items()}
+        seeds = _seeds(cand)
+        if seeds.empty:
+            break
+        best = seeds.iloc[0].to_dict()
+        D0 = D0c[np.abs(D0c - best["D0_mm"]) <= reach * dD0]
+        t0 = t0c[np.abs(t0c - best["t0_mm"]) <= reach * dt0]
+        D0, t0 = _walls(*np.meshgrid(D0, t0, indexing="ij"))
+        frames = []
+        for key in axes:
+            for sign in (-1.0, 1.0):
+                value = float(np.clip(best[key] + sign * step[key], *box[key]))
+                family = _family({**best, key: value})
+                if family in evaluate.models:
+                    continue
+                evaluate.models[family] = surrogate_at(family)
+                near = _rank(evaluate(family, D0, t0), objective)
+                frames += [near, *(_fine(evaluate, family, seed, dD0, dt0, box)
+                                   for _, seed in _seeds(near).head(1).iterrows())]
+        if frames:
+            cand = _merge([cand, *frames], objective)
+    return cand
 
 
 def _distinct_rubbers(constraints: Constraints, calibration: Calibration | None
@@ -709,6 +772,18 @@ def _near_lock(req: Requirement, theta0_low_deg: float) -> str:
             "lock lies at a larger eps")
 
 
+def _angle_unsearched(result: Search) -> str:
+    """The clause a search stopped by the housing ends with where it held the braid angle at
+    one value: at a given width the force depends on the angle both ways (a smaller one pulls
+    more per braid diameter and swells wider), so a range of it may hold a narrower muscle."""
+    low, high = result.constraints["theta0_deg"]
+    if high > low:
+        return ""
+    lowest, highest = PRACTICAL_RANGE.theta0_deg
+    return (f"; the braid angle was held at {low:.4g} deg: a range of it may hold a narrower "
+            f"muscle (--theta0 {lowest:g}:{highest:g})")
+
+
 def _infeasible_message(result: Search, constraints: Constraints) -> str:
     cand = result.candidates
     if cand["meets_forces"].any():  # only the housing is in the way
@@ -716,7 +791,7 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         return (f"infeasible: no design meets every requirement within max_outer_diameter_mm="
                 f"{constraints.max_outer_diameter_mm:g}: the narrowest that does, "
                 f"{geometry_text(best)}, is {best['outer_diameter_mm']:.1f} mm wide at "
-                f"{result.working_pressure_bar:g} bar"
+                f"{result.working_pressure_bar:g} bar" + _angle_unsearched(result)
                 + _beyond_practical_range(best, result.requirements, result.calibration))
     pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
     closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]

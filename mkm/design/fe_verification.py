@@ -36,6 +36,30 @@ def fe_model(mesh: str, L0_mm: float, theta0_deg: float, rubber: str,
         C01_MPa=material.C01_MPa, gap_mm=float(gap_mm))
 
 
+#: The braid angle a built muscle may be off by [deg] where no identification says better: the
+#: spread of a fitted braid angle the packaged bench configuration declares
+#: (``[muscle.tolerances] theta0_deg``)
+BUILT_ANGLE_TOLERANCE_DEG = 1.0
+
+
+def steeper_braid_N(row, requirements, calibration: Calibration | None,
+                    gap_mm: float = 0.0) -> list[float]:
+    """Per requirement, the FE force [N] of design ``row`` with its braid
+    :data:`BUILT_ANGLE_TOLERANCE_DEG` steeper (the force falls as the angle grows), on the
+    mesh of its row; 0 where the braid locks there or the FE gives no force."""
+    model = fe_model(row["fe_mesh"], row["L0_mm"],
+                     float(row["theta0_deg"]) + BUILT_ANGLE_TOLERANCE_DEG, row["rubber"],
+                     calibration, gap_mm)
+    out = []
+    for r in requirements:
+        prediction = model.predict(r.pressure_bar, float(row["D0_mm"]), float(row["t0_mm"]),
+                                   r.eps)
+        force = float(np.ravel(prediction.force_N)[0])
+        out.append(force if bool(np.ravel(prediction.valid)[0]) and np.isfinite(force)
+                   else 0.0)
+    return out
+
+
 def identified_band_N(row, requirements, calibration: Calibration | None,
                       gap_mm: float = 0.0) -> list[float | None]:
     """Per requirement, the 95 % half-width [N] of design ``row``'s FE force that the

@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.design.box_search import (
+    AXIS_RESOLUTION,
     AXIS_VALUES,
     BOX_NAMES,
     COARSE_STEPS,
@@ -23,7 +24,13 @@ from mkm.design.box_search import (
     range_limits,
     search,
 )
-from mkm.design.fe_verification import identified_band_N, ordered, verify
+from mkm.design.fe_verification import (
+    BUILT_ANGLE_TOLERANCE_DEG,
+    identified_band_N,
+    ordered,
+    steeper_braid_N,
+    verify,
+)
 from mkm.design.robust import (
     WORST_CORNER_UNSOLVED,
     below_target,
@@ -69,6 +76,10 @@ class DesignResult:
     identified_band_N: list = field(default_factory=list)
     #: the ``--tolerance`` that carries the identified muscle's 95 % intervals ("" without)
     identified_tolerance: str = ""
+    #: per requirement, the chosen design's FE force with its braid
+    #: :data:`~mkm.design.fe_verification.BUILT_ANGLE_TOLERANCE_DEG` steeper [N], where no
+    #: identified muscle's band or ``--tolerance`` says how sure its margin is (else empty)
+    steeper_braid_N: list = field(default_factory=list)
 
     @property
     def chosen(self):
@@ -118,7 +129,8 @@ class DesignResult:
         verified again on a finer one, a robust design below the probability asked (none
         verified holds it), one whose worst corner the FE did not solve, and one met by less
         than the identified muscle's own uncertainty allows at the default probability
-        (:func:`held_with`). Empty when none."""
+        (:func:`held_with`), or, where no identified muscle says, by less than a braid 1 deg
+        steeper takes away (:attr:`steeper_braid_N`). Empty when none."""
         s = self.search
         notes = [n for n in (s.length_note, s.box_note()) if n]
         best = self.chosen
@@ -172,6 +184,20 @@ class DesignResult:
                              f"{100 * held:.0f} % probability: design for "
                              f"{100 * DEFAULT_PROBABILITY:g} % ({ask}: the intervals as build "
                              "tolerances) or require more force")
+        short = [(k, force) for k, force in enumerate(self.steeper_braid_N, start=1)
+                 if best is not None and force < s.requirements[k - 1].force_N]
+        for k, force in short:
+            margin = float(best[f"r{k}_fe_margin_N"])
+            less = float(best[f"r{k}_fe_N"]) - force
+            notes.append(f"the chosen design meets r{k} ({s.requirements[k - 1].label}) by "
+                         f"{margin:.3g} N ({float(best[f'r{k}_fe_margin_pct']):.2g} %); a braid "
+                         f"{BUILT_ANGLE_TOLERANCE_DEG:g} deg steeper than its "
+                         f"{float(best['theta0_deg']):.4g} deg pulls {less:.3g} N "
+                         f"({100 * less / float(best[f'r{k}_fe_N']):.2g} %) less there (the FE), "
+                         "short of it: the braid angle of the muscle built is not known to that "
+                         f"(no identified muscle): design for it (--tolerance theta0="
+                         f"{BUILT_ANGLE_TOLERANCE_DEG:g}), or identify the built muscle "
+                         "(mkm identify) and check it with its calibration")
         if best is not None and best["fe_mesh"] != self.mesh:
             notes.append(f"the {self.mesh} mesh's margin of the chosen design was within that "
                          f"mesh's error (mkm.mesh_errors): verified again on the "
@@ -261,6 +287,10 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     ok = designs[designs["meets_all"]]
     band = ([] if tolerances is not None or ok.empty else
             identified_band_N(ok.iloc[0], found.requirements, calibration, found.gap_mm))
+    # how sure a nominal margin is where no identification says: the braid angle built
+    steeper = ([] if tolerances is not None or ok.empty or any(b is not None for b in band)
+               else steeper_braid_N(ok.iloc[0], found.requirements, calibration,
+                                    found.gap_mm))
     n = len(found.requirements)
     columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
@@ -269,7 +299,8 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits,
                         probability=None if tolerances is None else probability,
                         identified_band_N=band,
-                        identified_tolerance=identified_tolerance(calibration))
+                        identified_tolerance=identified_tolerance(calibration),
+                        steeper_braid_N=steeper)
 
 
 def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *,
@@ -379,7 +410,10 @@ def design_record(result: DesignResult) -> dict:
                        "resolution": {"coarse_D0_mm": COARSE_STEPS[0],
                                       "coarse_t0_mm": COARSE_STEPS[1], "D0_mm": D0_STEP_MM,
                                       "t0_mm": T0_STEP_MM, "refined_seeds": SEEDS,
-                                      "L0_mm and theta0_deg values per range": AXIS_VALUES}},
+                                      "L0_mm and theta0_deg values per range": AXIS_VALUES,
+                                      # the FE search keeps its coarse values: a sweep a try
+                                      "L0_mm and theta0_deg refined to": (
+                                          None if s.fe_search else AXIS_RESOLUTION)}},
             # the mesh asked for; a design met within its error has the finer one's forces
             "verification": {"model": "axisym", "mesh": result.mesh,
                              "meshes": _in_mesh_order(result.designs["fe_mesh"]),
@@ -393,6 +427,7 @@ def design_record(result: DesignResult) -> dict:
             # the lines the command prints besides its summary (the box, the edge)
             "notes": result.notes(),
             "identified_band_N": result.identified_band_N,
+            "steeper_braid_N": result.steeper_braid_N,
             # the chosen design as the muscle every other command reads (null: none confirmed)
             "chosen_muscle": chosen.record() if (chosen := result.chosen_muscle(
                 s.calibration)) else None,

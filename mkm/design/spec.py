@@ -7,6 +7,7 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
+from mkm.bench.settings import saved_text
 from mkm.core.ranges import parse_fraction, parse_number
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.limits import check_value
@@ -221,7 +222,7 @@ def load_spec(path) -> dict:
     """
     path = Path(path)
     try:
-        table = tomllib.loads(path.read_text(encoding="utf-8-sig"))  # a BOM: a Windows editor
+        table = tomllib.loads(saved_text(path.read_bytes()))  # a Windows editor's
     except FileNotFoundError:
         raise ValueError(f"--spec {path}: no such file") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:

@@ -698,7 +698,8 @@ def instrument_terms(runs) -> dict:
 def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
     """What every run shares and the fit takes as given, as the bootstrap's uniform terms
     (:func:`mkm.identify.intervals.bootstrap`): the hold residuals' sensitivity to each (a
-    forward difference of a tenth of its bound) and its +- bound: the tube's declared wall
+    forward difference of a tenth of its bound; backward at the top of the source's box, which
+    a tube at the practical range's 60 mm would leave) and its +- bound: the tube's declared wall
     and diameter where not fitted (their declared tolerances, the largest of the runs'), and
     the pressure monitor's gain (its declared span error, or its one accuracy reached at the
     regulator's top pressure: the offset is fitted, a reading error growing with the pressure
@@ -718,6 +719,8 @@ def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
             continue
         base = base or fitting.traces(source, runs, best.values)
         step = 0.1 * half
+        if at + step > getattr(source, "box", {}).get(name, (at, np.inf))[1]:
+            step = -step  # a tube at the top of the searching surrogate's box: inward
         moved = fitting.traces(source, runs, {**best.values, name: at + step})
         out[name] = (np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds,
                                                                    strict=True)]) / step, half)

@@ -183,6 +183,55 @@ def test_missing_section_and_file_and_bad_toml():
         parse_config("[muscle\n")
 
 
+def test_a_config_saved_by_windows_programs_is_read_as_it_was_written(tmp_path, mkm_cli):
+    """The packaged example edited on the bench PC: saved by Notepad as "Unicode" (UTF-16 LE
+    with its byte-order mark, CRLF), as Windows PowerShell 5's `>` writes it, was 'cannot be
+    read as UTF-8 text ('utf-8' codec can't decode byte 0xff in position 0: ...)'; with a DOS
+    editor's Ctrl-Z after the last line, 'not valid TOML: Invalid statement (at line 107,
+    column 1)', a character nobody sees."""
+    from mkm.bench.config import example_config
+
+    text = example_config().read_text("utf-8").replace('D0_mm = 30.0', 'D0_mm = 25.0')
+    windows = text.replace("\n", "\r\n")
+    saved = {"unicode.toml": windows.encode("utf-16"),
+             "ctrl-z.toml": windows.encode() + b"\x1a",
+             "bom.toml": b"\xef\xbb\xbf" + windows.encode()}
+    for name, data in saved.items():
+        (tmp_path / name).write_bytes(data)
+        config = load_config(tmp_path / name)
+        assert config.muscle.D0_mm == 25.0, name
+        assert config.daq.backend == "sim" and config.sequence.pressures_bar[-1] == 2.5, name
+    # bytes that are no UTF-8 nor UTF-16 (Notepad's "ANSI": a code page's ü) are named as such
+    (tmp_path / "ansi.toml").write_bytes(text.replace("paper-prototype", "Müller").encode(
+        "cp1252"))
+    code, out, err = mkm_cli(["check", "--config", str(tmp_path / "ansi.toml")])
+    at = text.encode().index(b"paper-prototype") + 2
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
+        f"mkm check: error: config {tmp_path / 'ansi.toml'} is not UTF-8 text (byte {at} is "
+        "not, as a Windows code page saves an accented letter): save it as UTF-8 (Notepad: "
+        "File, Save as, Encoding UTF-8)"]
+
+
+def test_a_config_path_typed_with_backslashes_on_another_system_says_the_separator(
+        tmp_path, mkm_cli, monkeypatch):
+    """`mkm check --config "Müller Versuch 1\\bench.toml"`, pasted from the bench PC: 'does
+    not exist', where `mkm report` of a run folder so typed says the separator here."""
+    folder = tmp_path / "Müller Versuch 1"
+    folder.mkdir()
+    from mkm.bench.config import copy_example_config
+
+    copy_example_config(folder / "bench.toml")
+    monkeypatch.chdir(tmp_path)
+    code, out, err = mkm_cli(["check", "--config", "Müller Versuch 1\\bench.toml"])
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
+        "mkm check: error: config Müller Versuch 1\\bench.toml does not exist: expected a "
+        "TOML file; on this system folders are separated by /: 'Müller Versuch 1/bench.toml'?"]
+    code, out, err = mkm_cli(["check", "--config", "Müller Versuch 1/bench.toml"])
+    assert code == 0, err
+
+
 def test_command_is_clamped_and_monitor_scaled():
     r = load_config().regulator
     assert r.command_volts(1.0) == pytest.approx(2.5)  # 0-10 V over 0-4 bar full scale

@@ -46,6 +46,36 @@ def test_a_shared_input_within_its_tolerance_is_inside_the_interval():
     assert high - low < 0.05 * 2 * 0.95 * h
 
 
+def test_a_tubes_tolerance_at_the_top_of_the_searching_box_is_differenced_inward(monkeypatch):
+    """A 60 mm tube (the practical range's widest, D0 +- 0.3 mm declared), searched with the
+    range's surrogate: the tolerance term's forward difference asked it at 60.03 mm, and
+    `mkm identify` printed 'note: 402 of 402 points lie outside the training domain
+    (D0_mm=60.03 not in [5, 60])'. The difference is taken inward there, with the same
+    sensitivity: a force linear in D0 gives its slope either way."""
+    from types import SimpleNamespace
+
+    from mkm.identify.procedure import shared_terms
+
+    asked = []
+
+    def traces(source, runs, values):
+        asked.append(dict(values))
+        return [3.0 * values.get("D0_mm", 60.0) + 5.0 * values.get("t0_mm", 4.0) + np.zeros(4)]
+
+    monkeypatch.setattr(fitting, "traces", traces)
+    source = SimpleNamespace(box={"D0_mm": (5.0, 60.0), "t0_mm": (0.5, 6.0)})
+    run = SimpleNamespace(geometry_tolerance_mm={"D0_mm": 0.3, "t0_mm": 0.1},
+                          muscle={"D0_mm": 60.0, "t0_mm": 4.0}, monitor_gain_bound=0.0,
+                          monitor_hysteresis_bar=0.0, hold=np.arange(4))
+    best = SimpleNamespace(names=("theta0_deg",), values={"theta0_deg": 33.0})
+    terms = shared_terms(source, [run], best)
+    assert [v["D0_mm"] for v in asked if "D0_mm" in v] == [pytest.approx(59.97)]
+    assert [v["t0_mm"] for v in asked if "t0_mm" in v] == [pytest.approx(4.01)]
+    np.testing.assert_allclose(terms["D0_mm"][0], 3.0)
+    np.testing.assert_allclose(terms["t0_mm"][0], 5.0)
+    assert terms["D0_mm"][1] == 0.3 and terms["t0_mm"][1] == 0.1
+
+
 def test_model_form_terms_extend_one_side_or_both():
     fit = linear_fit(np.linspace(1.0, 2.0, 5))
     fit.bounds["theta0_deg"] = (0.0, 2.05)
