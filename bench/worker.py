@@ -46,14 +46,17 @@ import time
 from collections import deque
 from contextlib import nullcontext
 
+import numpy as np
+
 from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
+from mkm.bench.preflight import FRICTION_FRACTION, force_bounds_N
 from mkm.bench.recorder import Recorder
 from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
-from mkm.bench.vent import SETTLED_S
+from mkm.bench.vent import SETTLED_S, ZERO_NOISE_SIGMAS
 
 RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
 # The muscle's limit is max_pressure_bar. A regulator at its command reads within its accuracy
@@ -71,6 +74,11 @@ MARKER_WAIT_S = 0.5
 #: (twenty readings at 10 Hz; one step of noise keeps two readings on one code at most a third
 #: of the time), and behind it the force limit is not watched
 STUCK_CELL_S = 2.0
+#: a load cell held on one code while the measured pressure rose by what must move the
+#: muscle's force this many ADC steps (:func:`mkm.bench.preflight.force_bounds_N`) is stuck or
+#: disconnected, however quiet: a force that rises one step moves any cell's code; the rest is
+#: margin for the rise's bounds
+STUCK_RISE_STEPS = 4
 
 
 class Stop(Exception):
@@ -139,6 +147,12 @@ class Acquisition:
         self._same_low_bar = math.inf
         self._same_rise = (0.0, math.nan, math.nan)
         self._pressure_from_s: float | None = None
+        # the last three plausible readings [bar] since the load cell's code was first read
+        # (their median: one glitch moves none), the lowest of those medians, and the muscle's
+        # force bounds over pressure (built once, as first needed): :meth:`unmoved_cell`
+        self._last3_bar: deque = deque(maxlen=3)
+        self._held_low_bar = math.inf
+        self._force_bounds: tuple | None = None
         self.highest_bar = 0.0
         self.command_bar = 0.0
         self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
@@ -358,7 +372,12 @@ class Acquisition:
         if math.isfinite(cell_V) and (self._same_cell is None or self._same_cell[0] != cell_V):
             self._same_cell = (cell_V, index / self.rate_hz)
             self._same_low_bar, self._same_rise = math.inf, (0.0, math.nan, math.nan)
+            self._held_low_bar = math.inf
+            self._last3_bar.clear()  # the readings since the code was first read
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
+            self._last3_bar.append(pressure)
+            if len(self._last3_bar) == 3:
+                self._held_low_bar = min(self._held_low_bar, statistics.median(self._last3_bar))
             self._same_low_bar = min(self._same_low_bar, pressure)
             if pressure - self._same_low_bar > self._same_rise[0]:
                 self._same_rise = (pressure - self._same_low_bar, self._same_low_bar, pressure)
@@ -384,7 +403,7 @@ class Acquisition:
             # the measured pressure is the monitor's, or the operator's manometer reading: a
             # hand regulator turned past the limit is as over-pressured as an electronic one
             over = self._overpressure(t_s, pressure)
-            fault = over or self._stuck_cell(t_s, cell_V, force)
+            fault = over or self._stuck_cell(t_s, cell_V, force) or self.unmoved_cell(force)
             trip = fault or self._interlock(index, force, pressure, cell_V, monitor_V, flags)
             if trip:
                 flags.append("interlock")
@@ -416,6 +435,56 @@ class Acquisition:
                 f"{self.tare_std_V * self.cell.sensitivity_N_per_V:.2f} N at the tare: a stuck "
                 "or disconnected load cell, behind which the force limit is not watched; check "
                 "its cable, amplifier and supply")
+
+    def unmoved_cell(self, force: float) -> str | None:
+        """The load cell has held one code since the pressure, read as the median of three,
+        was at its lowest, and the pressure has risen since by what must move the muscle's
+        force :data:`STUCK_RISE_STEPS` ADC steps or more: stuck or disconnected (its
+        message), or None. Each pressure is taken the monitor's accuracy towards the other;
+        the force moved by at least the larger of
+
+        - the force the muscle surely pulls at the high pressure less the most it could pull
+          at the low one (:func:`mkm.bench.preflight.force_bounds_N`): a muscle slack over the
+          rise (its eps, its threshold) is no rise that must move it;
+        - the force read as the code was first read, less what its zero may be off (the
+          tare's noise, two ADC steps and the zero drift a run allows), times the pressure's
+          ratio less one, the braid's friction taken off both ends: the force of a muscle at a
+          fixed length grows at least in proportion to its pressure (above a threshold, none
+          below it), so a live cell read the force at the low pressure.
+
+        It needs no noise at the tare, so it watches a cell quieter than a step, which
+        :meth:`_stuck_cell` cannot tell from a stuck one."""
+        if self._same_cell is None or len(self._last3_bar) < 3:
+            return None
+        high = statistics.median(self._last3_bar)
+        low = self._held_low_bar
+        if not high > low:
+            return None
+        offset_bar, gain = self.config.regulator.reading_bounds()
+        high_bar, low_bar = high - offset_bar - gain * high, low + offset_bar + gain * low
+        if self._force_bounds is None:
+            self._force_bounds = force_bounds_N(self.config)
+        pressure_bar, least_N, most_N = self._force_bounds
+        rise_N = (float(np.interp(high_bar, pressure_bar, least_N))
+                  - float(np.interp(low_bar, pressure_bar, most_N)))
+        step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
+            * self.cell.sensitivity_N_per_V
+        held_N = force - (ZERO_NOISE_SIGMAS * self.tare_std_V * self.cell.sensitivity_N_per_V
+                          + 2 * step_N
+                          + self.cell.zero_drift_fraction_fs * self.cell.capacity_N)
+        if held_N > 0 and low_bar > 0:
+            sure = (1.0 - FRICTION_FRACTION) / (1.0 + FRICTION_FRACTION)
+            rise_N = max(rise_N, held_N * (sure * high_bar / low_bar - 1.0))
+        if not rise_N >= STUCK_RISE_STEPS * step_N:
+            return None
+        cell_V, since_s = self._same_cell
+        return (f"force interlock: the load cell read {cell_V:.4f} V ({force:+.2f} N) unchanged "
+                f"from {since_s:g} s while the monitor rose from {round(low, 2) + 0.0:.2f} to "
+                f"{high:.2f} bar, "
+                f"which moves the muscle's force by {rise_N:.1f} N or more at eps "
+                f"{self.config.muscle.eps:g} ({rise_N / step_N:.0f} ADC steps of "
+                f"{step_N:.2f} N): a stuck or disconnected load cell, behind which the force "
+                "limit is not watched; check its cable, amplifier and supply")
 
     def _commanded_at(self, index: int) -> float:
         """The command [bar] sample ``index`` was acquired under: the last one issued at or
