@@ -80,6 +80,8 @@ def assert_every_flushed_sample(run, flushed):
 STOPS = [("SIGINT", 1), ("SIGINT", 2), ("SIGTERM", 1), ("SIGTERM", 2)]
 if hasattr(signal, "SIGHUP"):
     STOPS.append(("SIGHUP", 1))
+if hasattr(signal, "SIGABRT") and sys.platform != "win32":  # os.kill ends it on Windows
+    STOPS.append(("SIGABRT", 1))
 
 
 @pytest.mark.slow  # sends signals to runs in subprocesses
@@ -395,18 +397,21 @@ def test_a_signal_during_the_devices_open_is_held_until_the_open_ends(config, tm
 
 
 @pytest.mark.skipif(not hasattr(signal, "SIGQUIT"), reason="POSIX signals")
-@pytest.mark.parametrize("name", ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGXCPU", "SIGRTMIN+1"])
+@pytest.mark.parametrize("name", ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGXCPU", "SIGRTMIN+1",
+                                  "SIGABRT", "SIGTRAP", "SIGSYS"])
 def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path, name):
     # Ctrl-\ (SIGQUIT), or a SIGUSR1, SIGUSR2, SIGXCPU (ulimit -t), a real-time signal
-    # (`kill -s RTMIN+1`) sent mid-step: their default action ended the process at once, the
-    # regulator holding the step's pressure (the AO keeps its last value), run.json
-    # "running", the block in hand lost. Each is a stop signal: vented at once, recorded with
-    # it, exit 128 + N.
+    # (`kill -s RTMIN+1`), a SIGABRT, SIGTRAP or SIGSYS sent with kill mid-step: their default
+    # action ended the process at once, the regulator holding the step's pressure (the AO
+    # keeps its last value), run.json "running", the block in hand lost. Each is a stop
+    # signal: vented at once, recorded with it, exit 128 + N.
     from mkm.bench.run import BenchRun
     from mkm.bench.sim import SimBackend
 
     if name.startswith("SIGRTMIN+") and not hasattr(signal, "SIGRTMIN"):
         pytest.skip("no real-time signals on this platform")
+    if not name.startswith("SIGRTMIN+") and not hasattr(signal, name):
+        pytest.skip(f"no {name} on this platform")
     signum = (signal.SIGRTMIN + int(name.removeprefix("SIGRTMIN+"))
               if name.startswith("SIGRTMIN+") else getattr(signal, name))
     backend = SimBackend(config)
@@ -431,6 +436,19 @@ def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path,
     assert backend.commands[-1][1] == 0.0 and run.commands["purpose"].iloc[-1] == "vent"
     assert run.meta.vent_check["verified"]
     assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
+
+
+@pytest.mark.slow  # starts a process that aborts
+def test_an_abort_still_ends_the_process_with_the_stop_handlers_installed(tmp_path):
+    # SIGABRT is a stop signal while a run goes; the process's own abort() (a driver's failed
+    # assertion) must still end it, not return into the code that aborted: C's abort restores
+    # the default action and raises again once the handler returns
+    script = ("import os\nfrom mkm.bench.signals import StopSignals\n"
+              "with StopSignals():\n    os.abort()\n")
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=30, cwd=tmp_path)
+    expected = -signal.SIGABRT if sys.platform != "win32" else 3
+    assert proc.returncode == expected, proc.stderr
 
 
 @pytest.mark.skipif(not hasattr(signal, "SIGPROF"), reason="POSIX signals")
