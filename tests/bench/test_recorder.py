@@ -1245,3 +1245,55 @@ def test_samples_the_state_folder_cannot_keep_either_are_said_and_hold_nothing(
         assert said.group(2).endswith(f"are being written to {kept}, which did not answer "
                                       "within 2 s (it hangs): kept once it answers, lost if "
                                       "this process ends first")
+
+
+def test_run_json_saved_behind_rows_holds_the_books_of_the_rows_on_disk(config, tmp_path,
+                                                                         monkeypatch):
+    # The tare's run.json is queued behind samples 0-9, which the disk is still writing; the
+    # loop meanwhile queues samples 10-19, then records 5 samples lost after them. The writer
+    # wrote run.json with the books as they were when it reached the save: the gap after
+    # sample 19 recorded while samples.csv held samples 0-9, a record (a crash there leaves
+    # it) whose gap lies past its rows. It writes them as they were when the save was queued,
+    # with the count of the rows on disk.
+    import threading
+
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.storage import Gap, Sample
+
+    def rows(first):
+        return [Sample(k, k / 10, -1, "tare", 0.0, 0.0, 0.0, 0.015, 1.0, 0.0, "")
+                for k in range(first, first + 10)]
+
+    release, writing = threading.Event(), threading.Event()
+    append, write_meta = RunWriter.append_samples, RunWriter.write_meta
+    saved = []
+
+    def held_at_the_first_block(self, block):
+        if block[0].sample == 0:
+            writing.set()
+            release.wait(30)
+        append(self, block)
+
+    def recorded(self, meta):
+        csv = self.path / "samples.csv"
+        on_disk = csv.read_text().count("\n") - 1 if csv.exists() else 0
+        saved.append((list(meta.gaps), meta.lost_samples, meta.counters["samples"], on_disk))
+        write_meta(self, meta)
+
+    monkeypatch.setattr(RunWriter, "append_samples", held_at_the_first_block)
+    monkeypatch.setattr(RunWriter, "write_meta", recorded)
+    backend = SimBackend(config)
+    recorder = Recorder(tmp_path, config, backend.open(), 2, (1.0, 2.0))
+    saved.clear()  # the folder's first run.json
+    recorder.samples(rows(0))
+    assert writing.wait(30)  # the writer holds samples 0-9
+    recorder.tare({"offset_V": 0.015})  # the save, queued behind them
+    recorder.samples(rows(10))
+    recorder.gap(Gap(19, 5, 2.0, 2.5, "overflow"))
+    release.set()
+    assert recorder.wait_written(30)
+    assert saved == [([], 0, 10, 10)]  # the books of samples 0-9, as on disk
+    assert recorder.finish("complete", "done") == []
+    final = load_run(recorder.path).meta
+    assert final.lost_samples == 5 and final.counters["samples"] == 20  # the end's books whole
