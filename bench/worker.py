@@ -462,9 +462,7 @@ class Acquisition:
             return None
         offset_bar, gain = self.config.regulator.reading_bounds()
         high_bar, low_bar = high - offset_bar - gain * high, low + offset_bar + gain * low
-        if self._force_bounds is None:
-            self._force_bounds = force_bounds_N(self.config)
-        pressure_bar, least_N, most_N = self._force_bounds
+        pressure_bar, least_N, most_N = self._bounds()
         rise_N = (float(np.interp(high_bar, pressure_bar, least_N))
                   - float(np.interp(low_bar, pressure_bar, most_N)))
         step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
@@ -485,6 +483,12 @@ class Acquisition:
                 f"{self.config.muscle.eps:g} ({rise_N / step_N:.0f} ADC steps of "
                 f"{step_N:.2f} N): a stuck or disconnected load cell, behind which the force "
                 "limit is not watched; check its cable, amplifier and supply")
+
+    def _bounds(self) -> tuple:
+        """The muscle's force bounds over pressure (:func:`force_bounds_N`), built once."""
+        if self._force_bounds is None:
+            self._force_bounds = force_bounds_N(self.config)
+        return self._force_bounds
 
     def _commanded_at(self, index: int) -> float:
         """The command [bar] sample ``index`` was acquired under: the last one issued at or
@@ -693,6 +697,7 @@ class Acquisition:
         self._recent_N = deque((force - shift_N for force in self._recent_N),
                                maxlen=self._recent_N.maxlen)
         self.tare_offset_V, self.tare_std_V = offset_V, std_V
+        self._bounds()  # built before any pressure, not in the rise they judge
 
     def hung_said(self) -> str:
         """Why the read hung and what the watchdog's vent did, or ""."""
