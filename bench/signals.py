@@ -208,8 +208,12 @@ class StopSignals:
 
         For a block read from the device and its recording: a signal raised between the two
         would lose samples the device no longer holds. The delay is the block's own: a DAQmx
-        read blocks in C, where no Python handler runs anyway.
+        read blocks in C, where no Python handler runs anyway. Inside another such block it
+        holds nothing of its own: the outer one raises at its end.
         """
+        if self._deferring:
+            yield
+            return
         self._deferring = True
         try:
             yield

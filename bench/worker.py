@@ -786,36 +786,39 @@ class Acquisition:
         self.asked_bar = max(self.asked_bar, clamped)
         if self.lease is not None and clamped > 0:
             self._mark(clamped)
-        # watched until the device's clock is read after the write (a driver call too)
-        self.writing = (time.monotonic(), clamped)
-        try:
-            self.backend.write_command(volts)
-            ok = self.written = True
-            self.command_bar = clamped
-            if clamped > 0:
-                self.pressure_commanded_bar = clamped
-            self.vented = clamped == 0.0
-            meta = self.recorder.meta
-            stopped_at = self.stop_time()
-            if clamped == 0.0 and stopped_at is not None and meta.stop_to_vent_s is None:
-                meta.stop_to_vent_s = time.monotonic() - stopped_at
-                meta.vented_at_unix_s = time.time()
-        finally:
+        # a stop signal is held until the write and its books are done: one raised as the
+        # write returns left a pressure on the device that the books called a failed write
+        with self.guard():
+            # watched until the device's clock is read after the write (a driver call too)
+            self.writing = (time.monotonic(), clamped)
             try:
-                issued = self._clock_index()
+                self.backend.write_command(volts)
+                ok = self.written = True
+                self.command_bar = clamped
+                if clamped > 0:
+                    self.pressure_commanded_bar = clamped
+                self.vented = clamped == 0.0
+                meta = self.recorder.meta
+                stopped_at = self.stop_time()
+                if clamped == 0.0 and stopped_at is not None and meta.stop_to_vent_s is None:
+                    meta.stop_to_vent_s = time.monotonic() - stopped_at
+                    meta.vented_at_unix_s = time.time()
             finally:
-                self.writing = None
-            if ok:
-                self._issued.append((issued, clamped))
-                # a command every sample still to be read was acquired after is the oldest needed
-                while len(self._issued) > 1 and self._issued[1][0] <= self.next_index:
-                    self._issued_before_bar = self._issued.pop(0)[1]
-            self.recorder.meta.last_command_bar = self.command_bar
-            if ok and self.lease is not None and clamped == 0.0:
-                lease = self.lease  # after the vent, never waited for: the shutdown checks it
-                lease.post(lambda: lease.command(0.0))
-            self.recorder.command(CommandRecord(issued / self.rate_hz, issued, clamped, volts,
-                                                ok, purpose))
+                try:
+                    issued = self._clock_index()
+                finally:
+                    self.writing = None
+                if ok:
+                    self._issued.append((issued, clamped))
+                    # the oldest still needed: every sample to be read was acquired after it
+                    while len(self._issued) > 1 and self._issued[1][0] <= self.next_index:
+                        self._issued_before_bar = self._issued.pop(0)[1]
+                self.recorder.meta.last_command_bar = self.command_bar
+                if ok and self.lease is not None and clamped == 0.0:
+                    lease = self.lease  # after the vent, never waited for: the shutdown checks it
+                    lease.post(lambda: lease.command(0.0))
+                self.recorder.command(CommandRecord(issued / self.rate_hz, issued, clamped, volts,
+                                                    ok, purpose))
         if ok and clamped > 0 and self.hung:
             # a pressure that went out after the watchdog's vent (its write hung): vented again
             # at once; the run stops at its next block

@@ -438,6 +438,35 @@ def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path,
     assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
 
 
+def test_a_signal_as_a_pressure_write_returns_leaves_it_in_the_books(config, tmp_path):
+    # SIGTERM arrives as the write of the 0.5 bar step returns: the stop cut the books, the
+    # device holding 0.5 bar while commands.csv called the write failed and the run's last
+    # pressure commanded stayed 0 bar (what a vent that then fails says the regulator may still
+    # hold). The signal is held until the write's books are kept, then vents as ever.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    backend = SimBackend(config)
+    write = backend.write_command
+
+    def signalled_as_it_returns(volts):
+        write(volts)
+        if volts > 0:
+            signal.raise_signal(signal.SIGTERM)  # its handler runs as the write returns
+
+    backend.write_command = signalled_as_it_returns
+    run = BenchRun(config, backend, tmp_path, handle_signals=True, notify=lambda m: None)
+    result = run.execute()
+    assert result.status == "aborted" and result.exit_code == 128 + signal.SIGTERM
+    assert result.reason == "stopped by SIGTERM at once; vented"
+    commands = load_run(result.path).commands
+    assert list(commands["purpose"]) == ["vent", "vent", "step", "vent"]
+    assert list(commands["ok"]) == [True] * 4  # the step's write reached the device
+    assert commands["command_bar"].iloc[2] == 0.5 == run.acquisition.pressure_commanded_bar
+    volts = [v for _, v in backend.commands]  # the device's own: 0.5 bar, then vents only
+    assert volts.count(1.25) == 1 and set(volts[volts.index(1.25) + 1:]) == {0.0}
+
+
 @pytest.mark.slow  # starts a process that aborts
 def test_an_abort_still_ends_the_process_with_the_stop_handlers_installed(tmp_path):
     # SIGABRT is a stop signal while a run goes; the process's own abort() (a driver's failed
