@@ -2,6 +2,7 @@
 
 import errno
 import re
+import time
 from pathlib import Path
 
 import pytest
@@ -651,6 +652,20 @@ def test_a_recorder_thread_that_fails_stops_the_run_vented_and_loses_no_sample(c
     monkeypatch.setattr(Recorder, "_what", staticmethod(failing))
     backend = SimBackend(config)
     run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    # the loop reads on once the thread has taken samples 60 and failed: on the virtual clock
+    # it ran ahead of a thread that a loaded machine slowed, past the run's last step (a
+    # complete run then, below), and the test failed once so
+    read = backend.read
+
+    def read_once_the_thread_failed(n, timeout):
+        block = read(n, timeout)
+        if block.first_index > 60 and run.recorder is not None:
+            deadline = time.monotonic() + 30
+            while not run.recorder.crashed and time.monotonic() < deadline:
+                time.sleep(0.001)
+        return block
+
+    backend.read = read_once_the_thread_failed
     out = []
     runner = threading.Thread(target=lambda: out.append(run.execute()), daemon=True)
     runner.start()
@@ -665,6 +680,54 @@ def test_a_recorder_thread_that_fails_stops_the_run_vented_and_loses_no_sample(c
     assert recorded.meta.counters["samples"] == len(recorded.samples) > 61
     assert recorded.commands["purpose"].iloc[-1] == "vent" and recorded.meta.vent_check["verified"]
     assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
+    assert recorded.meta.steps_done < 3  # stopped there, not at the end
+
+
+def test_a_recorder_thread_that_fails_after_the_last_step_is_said_every_sample_kept(
+        config, tmp_path, monkeypatch):
+    # The other order, a loaded machine's: the thread reaches samples 60 only once the loop
+    # has done its last step and vented. The run is complete, every sample written as it
+    # ended, and says what failed, exit 2.
+    import threading
+
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    what, append = Recorder._what, RunWriter.append_samples
+    vented = threading.Event()
+
+    def failing(kind, payload):
+        if kind == "samples" and payload[0].sample == 60:
+            raise MemoryError("injected")
+        return what(kind, payload)
+
+    def lagging(self, rows):
+        if rows[-1].sample >= 50:
+            vented.wait(30)  # a net under a broken run: it vents at its end
+        append(self, rows)
+
+    monkeypatch.setattr(Recorder, "_what", staticmethod(failing))
+    monkeypatch.setattr(RunWriter, "append_samples", lagging)
+    backend = SimBackend(config)
+    write = backend.write_command
+
+    def noting_the_end(volts):
+        write(volts)
+        if volts == 0.0 and max(v for _, v in backend.commands) > 0:
+            vented.set()
+
+    backend.write_command = noting_the_end
+    result = BenchRun(config, backend, tmp_path, handle_signals=False,
+                      notify=lambda m: None).execute()
+    assert result.status == "complete" and result.exit_code == 2, result.reason
+    assert re.fullmatch(r"all 3 steps done; the recorder's thread failed \(MemoryError: "
+                        r"injected\): the \d+ samples it held were written as the run ended",
+                        result.reason), result.reason
+    recorded = load_run(result.path)
+    assert list(recorded.samples["sample"]) == list(range(len(recorded.samples)))  # none lost
+    assert recorded.meta.counters["samples"] == len(recorded.samples)
+    assert recorded.meta.steps_done == 3 and recorded.meta.vent_check["verified"]
 
 
 def test_a_close_that_fails_otherwise_than_the_disk_still_records_the_outcome(tmp_path, capsys,
