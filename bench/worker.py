@@ -476,8 +476,9 @@ class Acquisition:
         if not rise_N >= STUCK_RISE_STEPS * step_N:
             return None
         cell_V, since_s = self._same_cell
+        read = "the monitor" if self.electronic else "the manometer's reading"
         return (f"force interlock: the load cell read {cell_V:.4f} V ({force:+.2f} N) unchanged "
-                f"from {since_s:g} s while the monitor rose from {round(low, 2) + 0.0:.2f} to "
+                f"from {since_s:g} s while {read} rose from {round(low, 2) + 0.0:.2f} to "
                 f"{high:.2f} bar, "
                 f"which moves the muscle's force by {rise_N:.1f} N or more at eps "
                 f"{self.config.muscle.eps:g} ({rise_N / step_N:.0f} ADC steps of "

@@ -760,6 +760,21 @@ def test_a_quiet_load_cell_on_one_code_from_the_tare_is_stopped_as_the_pressure_
     assert run.samples.query("phase == 'tare'")["loadcell_V"].nunique() == 2
 
 
+def test_a_quiet_load_cell_stuck_under_a_manual_regulator_stops_at_the_pressure_typed(
+        config, tmp_path):
+    # with a hand regulator the pressure is the manometer's reading the operator types: the
+    # 0.5 bar typed for the first step is the rise that must move the muscle's force
+    c = config.replace(regulator={"kind": "manual"},
+                       sim={"noise_V": 0.0003, "faults": {"loadcell_stuck_at_s": 1.5}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    assert re.match(r"force interlock: the load cell read 0\.0146 V \(-0\.0\d N\) unchanged from "
+                    r"1\.\d s while the manometer's reading rose from 0\.00 to 0\.50 bar, which "
+                    r"moves the muscle's force by ([0-9.]+) N or more at eps 0 ", result.reason)
+    assert acquire(c.replace(sim={"faults": {"loadcell_stuck_at_s": None}}), out_root=tmp_path,
+                   **QUIET).status == "complete"  # the live cell: no trip
+
+
 def test_a_quiet_load_cell_on_one_code_under_a_slack_muscle_trips_nothing(config, tmp_path):
     # At eps 0.25 the muscle is slack up to 2.48 bar (its FE force), the thick-wall model at
     # the declared tolerances' weakest says so too: the steps at 0.5 and 1.0 bar read the
