@@ -9,7 +9,7 @@ goes, :class:`StopSignals` handles:
   closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows), and every other signal that would end
   the process while it keeps its default action (:data:`ENDING_SIGNAL_NAMES`: ``SIGQUIT`` from
   Ctrl-\\, ``SIGUSR1``, ``SIGALRM``, ``SIGXCPU``, ``SIGABRT``, ``SIGTRAP``, ``SIGSYS`` sent
-  with kill, ...; POSIX, ``SIGABRT`` on Windows too; and :data:`REALTIME_SIGNALS`):
+  with kill, ...; POSIX; and :data:`REALTIME_SIGNALS`):
   raise :class:`StopSignal` at once, which unwinds to the run's shutdown: vent, close the
   device, record. The exit status is 128 + N. Once it is raised, a further signal is only
   noted (the run's reason names it): nothing cuts the vent or the record;
@@ -44,11 +44,11 @@ from contextlib import contextmanager
 STOP_SIGNAL_NAMES = ("SIGINT", "SIGTERM", "SIGHUP", "SIGBREAK")
 STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(signal, n))
 #: the other signals whose default action ends the process (Ctrl-\ sends SIGQUIT; SIGABRT,
-#: SIGTRAP and SIGSYS sent with kill; POSIX, SIGABRT on Windows too): stop signals too while
-#: they keep that default (one a profiler or a test timer handles is left to it; faulthandler's
-#: dump of SIGABRT, which Python sees as the default, is not). An abort() still ends the process
-#: once the handler returns (C's abort restores the default and raises again), the bench marker
-#: making the next command vent.
+#: SIGTRAP and SIGSYS sent with kill; POSIX: Windows has SIGABRT, but its kill ends a process
+#: with no signal to handle): stop signals too while they keep that default (one a profiler or
+#: a test timer handles is left to it; faulthandler's dump of SIGABRT, which Python sees as the
+#: default, is not). An abort() still ends the process once the handler returns (C's abort
+#: restores the default and raises again), the bench marker making the next command vent.
 #: SIGSEGV, SIGBUS, SIGFPE and SIGILL are left alone: raised by a fault, the faulting
 #: instruction would run again after a handler, in a loop that holds the pressure.
 ENDING_SIGNAL_NAMES = ("SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM", "SIGXCPU", "SIGVTALRM",
