@@ -304,9 +304,9 @@ def one_code_warning(tare: dict, config: BenchConfig) -> str:
         return (f"the load cell spreads {stray_V * 1e3:.2f} mV rms at 0 bar "
                 f"({stray_V * cell.sensitivity_N_per_V:.2f} N), less than one ADC step "
                 f"({step_mV:.2f} mV): one code held {STUCK_CELL_S:g} s cannot tell it stuck from "
-                "quiet, so a cell that sticks is found only once the pressure rises by what must "
-                f"move the muscle's force {STUCK_RISE_STEPS} ADC steps (never where it stays "
-                "slack), the force limit blind meanwhile")
+                "quiet, so a cell that sticks is found only once the pressure rises or falls by "
+                f"what must move the muscle's force {STUCK_RISE_STEPS} ADC steps (never where it "
+                "stays slack), the force limit blind meanwhile")
     read = (f"on one ADC code for its last {held_s:.1f} s, where it strayed less than a step "
             "before")
     return (f"the tare read the load cell {read}: a stuck or disconnected cell reads so, and "

@@ -148,11 +148,13 @@ class Acquisition:
         self._same_rise = (0.0, math.nan, math.nan)
         self._pressure_from_s: float | None = None
         # the last three plausible readings [bar] since the load cell's code was first read
-        # (their median: one glitch moves none), the lowest of those medians, and the muscle's
-        # force bounds over pressure (built once, as first needed): :meth:`unmoved_cell`
+        # (their median: one glitch moves none), the lowest and the highest of those medians
+        # with when each was read [s], and the muscle's force bounds over pressure (built
+        # once, as first needed): :meth:`unmoved_cell`
         self._last3_bar: deque = deque(maxlen=3)
-        self._held_low_bar = math.inf
+        self._held_low = self._held_high = (math.nan, math.nan)
         self._force_bounds: tuple | None = None
+        self.unmoved = ""  # why unmoved_cell found the load cell stuck ("" while it did not)
         self.highest_bar = 0.0
         self.command_bar = 0.0
         self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
@@ -372,12 +374,16 @@ class Acquisition:
         if math.isfinite(cell_V) and (self._same_cell is None or self._same_cell[0] != cell_V):
             self._same_cell = (cell_V, index / self.rate_hz)
             self._same_low_bar, self._same_rise = math.inf, (0.0, math.nan, math.nan)
-            self._held_low_bar = math.inf
+            self._held_low = self._held_high = (math.nan, math.nan)
             self._last3_bar.clear()  # the readings since the code was first read
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
             self._last3_bar.append(pressure)
             if len(self._last3_bar) == 3:
-                self._held_low_bar = min(self._held_low_bar, statistics.median(self._last3_bar))
+                median = statistics.median(self._last3_bar)
+                if not median >= self._held_low[0]:  # NaN: the first
+                    self._held_low = (median, index / self.rate_hz)
+                if not median <= self._held_high[0]:
+                    self._held_high = (median, index / self.rate_hz)
             self._same_low_bar = min(self._same_low_bar, pressure)
             if pressure - self._same_low_bar > self._same_rise[0]:
                 self._same_rise = (pressure - self._same_low_bar, self._same_low_bar, pressure)
@@ -437,27 +443,26 @@ class Acquisition:
                 "its cable, amplifier and supply")
 
     def unmoved_cell(self, force: float) -> str | None:
-        """The load cell has held one code since the pressure, read as the median of three,
-        was at its lowest, and the pressure has risen since by what must move the muscle's
-        force :data:`STUCK_RISE_STEPS` ADC steps or more: stuck or disconnected (its
-        message), or None. Each pressure is taken the monitor's accuracy towards the other;
-        the force moved by at least the larger of
+        """The load cell has held one code while the pressure, read as medians of three, rose
+        or fell between a low and a high that must move the muscle's force
+        :data:`STUCK_RISE_STEPS` ADC steps or more: stuck or disconnected (its message), or
+        None. Each pressure is taken the monitor's accuracy towards the other; the force
+        differs between them by at least the larger of
 
         - the force the muscle surely pulls at the high pressure less the most it could pull
           at the low one (:func:`mkm.bench.preflight.force_bounds_N`): a muscle slack over the
-          rise (its eps, its threshold) is no rise that must move it;
-        - the force read as the code was first read, less what its zero may be off (the
-          tare's noise, two ADC steps and the zero drift a run allows), times the pressure's
-          ratio less one, the braid's friction taken off both ends: the force of a muscle at a
-          fixed length grows at least in proportion to its pressure (above a threshold, none
-          below it), so a live cell read the force at the low pressure.
+          span (its eps, its threshold) makes no force to move;
+        - the force read, less what its zero may be off (the tare's noise, two ADC steps and
+          the zero drift a run allows), times the pressures' ratio less one, the braid's
+          friction taken off both ends: at a fixed length the force grows at least in
+          proportion to the pressure (above a threshold, none below it), and a live cell
+          that held its code read that force at the low pressure too.
 
         It needs no noise at the tare, so it watches a cell quieter than a step, which
         :meth:`_stuck_cell` cannot tell from a stuck one."""
         if self._same_cell is None or len(self._last3_bar) < 3:
             return None
-        high = statistics.median(self._last3_bar)
-        low = self._held_low_bar
+        (low, low_s), (high, high_s) = self._held_low, self._held_high
         if not high > low:
             return None
         offset_bar, gain = self.config.regulator.reading_bounds()
@@ -475,15 +480,17 @@ class Acquisition:
             rise_N = max(rise_N, held_N * (sure * high_bar / low_bar - 1.0))
         if not rise_N >= STUCK_RISE_STEPS * step_N:
             return None
-        cell_V, since_s = self._same_cell
         read = "the monitor" if self.electronic else "the manometer's reading"
-        return (f"force interlock: the load cell read {cell_V:.4f} V ({force:+.2f} N) unchanged "
-                f"from {since_s:g} s while {read} rose from {round(low, 2) + 0.0:.2f} to "
-                f"{high:.2f} bar, "
-                f"which moves the muscle's force by {rise_N:.1f} N or more at eps "
-                f"{self.config.muscle.eps:g} ({rise_N / step_N:.0f} ADC steps of "
-                f"{step_N:.2f} N): a stuck or disconnected load cell, behind which the force "
-                "limit is not watched; check its cable, amplifier and supply")
+        cell_V, since_s = self._same_cell
+        span = (f"rose from {round(low, 2) + 0.0:.2f} to {high:.2f}" if low_s < high_s else
+                f"fell from {high:.2f} to {round(low, 2) + 0.0:.2f}")
+        self.unmoved = (f"force interlock: the load cell read {cell_V:.4f} V ({force:+.2f} N) "
+                        f"unchanged from {since_s:g} s while {read} {span} bar, which moves "
+                        f"the muscle's force by {rise_N:.1f} N or more at eps "
+                        f"{self.config.muscle.eps:g} ({rise_N / step_N:.0f} ADC steps of "
+                        f"{step_N:.2f} N): a stuck or disconnected load cell, behind which the "
+                        "force limit is not watched; check its cable, amplifier and supply")
+        return self.unmoved
 
     def _bounds(self) -> tuple:
         """The muscle's force bounds over pressure (:func:`force_bounds_N`), built once."""

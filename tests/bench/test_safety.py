@@ -760,6 +760,30 @@ def test_a_quiet_load_cell_on_one_code_from_the_tare_is_stopped_as_the_pressure_
     assert run.samples.query("phase == 'tare'")["loadcell_V"].nunique() == 2
 
 
+def test_a_quiet_load_cell_stuck_at_the_top_stops_as_the_pressure_falls(config, tmp_path):
+    # the quiet cell sticks at 9 s, at 353.8 N on the 1.0 bar step: the pressure fell to 0.5
+    # bar and vented, the run went to its end, and the vent check blamed the regulator (`the
+    # muscle still pulls ... a monitor that reports its command`). A force held on one code
+    # while the pressure falls by what must move it is a stuck cell too: stopped there, and the
+    # vent check names the cell
+    c = config.replace(sim={"noise_V": 0.0003, "faults": {"loadcell_stuck_at_s": 9.0}})
+    result = acquire(c, out_root=tmp_path, **QUIET)
+    assert result.status == "failed" and result.exit_code == 4, result.reason
+    said = re.match(r"force interlock: the load cell read 1\.8188 V \(\+353\.84 N\) unchanged "
+                    r"from 9 s while the monitor fell from 1\.00 to (0\.[0-9]+) bar, which "
+                    r"moves the muscle's force by ([0-9.]+) N or more at eps 0 ", result.reason)
+    assert said, result.reason
+    # 352 N (353.8 N less its zero's doubt) x (0.9 / 1.1 x 0.944 / (low + 0.04 + 0.016 low) - 1)
+    # reaches 4 ADC steps below 0.72 bar (1.0 bar read 0.056 bar low by its accuracy)
+    assert 0.6 < float(said[1]) < 0.72
+    assert ("a load cell that does not change while the pressure falls is stuck or "
+            "disconnected") in result.reason
+    assert "a monitor that reports its command" not in result.reason
+    run = load_run(result.path)
+    assert run.meta.vent_check["doubted"] == "the load cell"
+    assert _tripped(run)["step"] == 2  # on the way down, before the 0.5 bar step was held
+
+
 def test_a_quiet_load_cell_stuck_under_a_manual_regulator_stops_at_the_pressure_typed(
         config, tmp_path):
     # with a hand regulator the pressure is the manometer's reading the operator types: the
@@ -838,8 +862,8 @@ def test_a_quiet_load_cell_stuck_mid_run_under_a_slack_muscle_stops_as_it_must_p
     assert re.fullmatch(r"warning: the load cell spreads 0\.[67]\d mV rms at 0 bar \(0\.1\d N\), "
                         r"less than one ADC step \(1\.22 mV\): one code held 2 s cannot tell it "
                         r"stuck from quiet, so a cell that sticks is found only once the "
-                        r"pressure rises by what must move the muscle's force 4 ADC steps \(never "
-                        r"where it stays slack\), the force limit blind meanwhile",
+                        r"pressure rises or falls by what must move the muscle's force 4 ADC "
+                        r"steps \(never where it stays slack\), the force limit blind meanwhile",
                         notes[1]), notes
     said = re.fullmatch(r"force interlock: the load cell read 0\.0146 V \(-0\.04 N\) unchanged "
                         r"from 3\.8 s while the monitor rose from 0\.2[45] to ([01]\.[0-9]+) bar, "
