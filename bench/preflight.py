@@ -161,9 +161,9 @@ def force_bounds_N(config, n: int = 1001) -> tuple[np.ndarray, np.ndarray, np.nd
     interlock's hard bound): the thick-wall model at the declared tolerances' weakest muscle
     times :data:`SURE_FRACTION`, and at their strongest one plus :data:`FRICTION_FRACTION`. The
     force at a fixed length rises with the pressure, from the threshold on (none below it, at
-    the lower bound's eps past the lock none at all), so a pressure that rose from ``low`` to
-    ``high`` moved the force by ``least(high) - most(low)`` or more: the stuck-cell interlock of
-    a quiet load cell (:meth:`mkm.bench.worker.Acquisition.unmoved_cell`)."""
+    the lower bound's eps past the lock none at all), so the forces at ``low`` and ``high``
+    differ by ``least(high) - most(low)`` or more, whichever came first: the stuck-cell
+    interlock of a quiet load cell (:meth:`mkm.bench.worker.Acquisition.unmoved_cell`)."""
     pressure_bar = np.linspace(0.0, 1.1 * config.regulator.max_pressure_bar, n)
     eps = config.muscle.eps
     least = SURE_FRACTION * _thickwall_N(config, pressure_bar, eps, -1)

@@ -74,11 +74,11 @@ MARKER_WAIT_S = 0.5
 #: (twenty readings at 10 Hz; one step of noise keeps two readings on one code at most a third
 #: of the time), and behind it the force limit is not watched
 STUCK_CELL_S = 2.0
-#: a load cell held on one code while the measured pressure rose by what must move the
+#: a load cell held on one code while the measured pressure rose or fell by what must move the
 #: muscle's force this many ADC steps (:func:`mkm.bench.preflight.force_bounds_N`) is stuck or
-#: disconnected, however quiet: a force that rises one step moves any cell's code; the rest is
-#: margin for the rise's bounds
-STUCK_RISE_STEPS = 4
+#: disconnected, however quiet: a force that moves one step moves any cell's code; the rest is
+#: margin for the bounds
+UNMOVED_CELL_STEPS = 4
 
 
 class Stop(Exception):
@@ -445,7 +445,7 @@ class Acquisition:
     def unmoved_cell(self, force: float) -> str | None:
         """The load cell has held one code while the pressure, read as medians of three, rose
         or fell between a low and a high that must move the muscle's force
-        :data:`STUCK_RISE_STEPS` ADC steps or more: stuck or disconnected (its message), or
+        :data:`UNMOVED_CELL_STEPS` ADC steps or more: stuck or disconnected (its message), or
         None. Each pressure is taken the monitor's accuracy towards the other; the force
         differs between them by at least the larger of
 
@@ -478,7 +478,7 @@ class Acquisition:
         if held_N > 0 and low_bar > 0:
             sure = (1.0 - FRICTION_FRACTION) / (1.0 + FRICTION_FRACTION)
             rise_N = max(rise_N, held_N * (sure * high_bar / low_bar - 1.0))
-        if not rise_N >= STUCK_RISE_STEPS * step_N:
+        if not rise_N >= UNMOVED_CELL_STEPS * step_N:
             return None
         read = "the monitor" if self.electronic else "the manometer's reading"
         cell_V, since_s = self._same_cell

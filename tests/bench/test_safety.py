@@ -738,7 +738,7 @@ def test_a_quiet_load_cell_on_one_code_from_the_tare_is_stopped_as_the_pressure_
     # code only 0.5 s, so it passes. It recorded one force at every step up to 1.0 bar, the
     # force limit blind, and was failed only at the run's end. At eps 0 the muscle pulls from
     # its first millibars: the rise that must move its force 4 ADC steps stops the run there.
-    from mkm.bench.worker import STUCK_RISE_STEPS
+    from mkm.bench.worker import UNMOVED_CELL_STEPS
 
     c = config.replace(sim={"noise_V": 0.0003, "faults": {"loadcell_stuck_at_s": 1.5}})
     result = acquire(c, out_root=tmp_path, **QUIET)
@@ -751,7 +751,7 @@ def test_a_quiet_load_cell_on_one_code_from_the_tare_is_stopped_as_the_pressure_
                         r"amplifier and supply; vented", result.reason)
     assert said, result.reason
     high_bar, rise_N, steps = float(said[1]), float(said[2]), int(said[3])
-    assert steps >= STUCK_RISE_STEPS and rise_N == pytest.approx(steps * STEP_N, abs=STEP_N)
+    assert steps >= UNMOVED_CELL_STEPS and rise_N == pytest.approx(steps * STEP_N, abs=STEP_N)
     run = load_run(result.path)
     assert run.meta.steps_done == 0 and run.meta.vent_check["verified"]  # before the first step
     # the muscle pulled what the interlock said, and more: a live cell would have moved
@@ -822,7 +822,7 @@ def test_a_quiet_load_cell_on_one_code_under_a_slack_muscle_trips_nothing(config
 
 
 def test_the_force_bounds_of_a_rise_hold_the_simulated_muscle(config):
-    # what the stuck-cell interlock of a rise takes the muscle to pull at least and at most
+    # what the stuck-cell interlock of a quiet cell takes the muscle to pull at least and at most
     # (preflight.force_bounds_N) holds the simulated FE muscle at every eps it pulls at, with
     # the sure half's margin: the weakest thick-wall force or more where that gives 2 N or more
     import numpy as np
@@ -847,7 +847,7 @@ def test_a_quiet_load_cell_stuck_mid_run_under_a_slack_muscle_stops_as_it_must_p
     # the muscle pulls 82 N, and the run was failed only at its end, the force limit blind
     # through 1.5 bar. The rise from 0.25 bar past the muscle's threshold (0.81 bar) stops it
     # as soon as its force must have moved 4 ADC steps, before the 1.5 bar step is reached.
-    from mkm.bench.worker import STUCK_RISE_STEPS
+    from mkm.bench.worker import UNMOVED_CELL_STEPS
 
     c = config.replace(muscle={"eps": 0.18}, sequence={"pressures_bar": (0.25, 1.5)},
                        sim={"noise_V": 0.0008})
@@ -872,7 +872,7 @@ def test_a_quiet_load_cell_stuck_mid_run_under_a_slack_muscle_stops_as_it_must_p
                         r"vented", stuck.reason)
     assert said, stuck.reason
     high_bar, rise_N = float(said[1]), float(said[2])
-    assert int(said[3]) >= STUCK_RISE_STEPS
+    assert int(said[3]) >= UNMOVED_CELL_STEPS
     assert 0.81 < high_bar < 1.5 and _truth_N(c, high_bar) > rise_N  # past the threshold
     run = load_run(stuck.path)
     assert run.meta.tare["std_V"] < 20 / 2 ** 14  # less than a step
@@ -912,7 +912,7 @@ def test_a_load_cell_stuck_late_in_the_tare_trips_two_seconds_after_it_stuck(con
     from mkm.bench.worker import STUCK_CELL_S
 
     # (at eps 0.28, slack up to 2.5 bar: the pre-conditioning's rise moves no force, and the
-    # interlock of a rise has nothing to trip on)
+    # interlock of a quiet cell has nothing to trip on)
     c = config.replace(muscle={"eps": 0.28}, sequence={"tare_s": 5.0, "preconditioning_cycles": 1},
                        sim={"faults": {"loadcell_stuck_at_s": 4.0}})
     result = acquire(c, out_root=tmp_path, **QUIET)
