@@ -23,6 +23,8 @@ it, else the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says whic
 
 from __future__ import annotations
 
+import numpy as np
+
 from mkm.bench.config import MIN_FORCE_LIMIT_FRACTION
 from mkm.fem.eq2 import BraidLock, chou_hannaford
 from mkm.fem.eq2 import braid_lock as fem_braid_lock
@@ -124,11 +126,49 @@ def thickwall_force_N(config, pressure_bar: float, eps: float) -> float:
     """The thick-wall model's force [N] of the configured muscle at ``pressure_bar`` and
     ``eps``, at the braid angle the other checks read (:func:`muscle_lock`): a closed form
     whose wall holds the braid below a threshold pressure, which Equation 2 has not."""
+    return float(_thickwall_N(config, float(pressure_bar), eps))
+
+
+def _thickwall_N(config, pressure_bar, eps: float, side: int = 0):
+    """:func:`thickwall_force_N` over an array of pressures; ``side`` +1 at the declared
+    tolerances' strongest muscle (``D0`` up, ``t0``, ``theta0`` and ``eps`` down), -1 at
+    their weakest, 0 as declared. Where the model gives no force (past the lock), 0."""
     from mkm.fem.ladder import make_model  # the models' registry: only where asked
 
-    m = config.muscle
-    model = make_model("thickwall", muscle=m, theta0_deg=muscle_lock(config).theta0_deg)
-    return float(model.predict(float(pressure_bar), m.D0_mm, m.t0_mm, eps).force_N)
+    m, tol = config.muscle, config.muscle.tolerances
+    theta0 = max(muscle_lock(config).theta0_deg - side * tol.theta0_deg, LIMITS["theta0_deg"][0])
+    model = make_model("thickwall", muscle=m, theta0_deg=theta0)
+    prediction = model.predict(pressure_bar, m.D0_mm + side * tol.D0_mm,
+                               m.t0_mm - side * tol.t0_mm, max(eps - side * tol.eps, 0.0))
+    force = np.where(prediction.valid, prediction.force_N, 0.0)
+    return np.maximum(np.nan_to_num(force, nan=0.0), 0.0)
+
+
+#: The share of the thick-wall model's force at the declared tolerances' weakest muscle that the
+#: muscle surely pulls: the FE model (the simulated muscle) pulls that force or more on the
+#: paper's prototype at eps 0 to 0.3 wherever it gives 2 N or more, and at most the model's
+#: force at their strongest (both held by ``tests/bench/test_safety.py``); the half is left for
+#: a rubber or braid beyond the declaration and for the braid's friction.
+SURE_FRACTION = 0.5
+#: Braid friction: a force held as the pressure falls reads up to this share above the static
+#: one (Davis & Caldwell 2006 report loops of several %; the simulator's play is 3 %).
+FRICTION_FRACTION = 0.1
+
+
+def force_bounds_N(config, n: int = 1001) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """What the configured muscle at its eps pulls at least and at most [N] at ``n``
+    pressures [bar] from 0 to 1.1 x ``regulator.max_pressure_bar`` (the over-pressure
+    interlock's hard bound): the thick-wall model at the declared tolerances' weakest muscle
+    times :data:`SURE_FRACTION`, and at their strongest one plus :data:`FRICTION_FRACTION`. The
+    force at a fixed length rises with the pressure, from the threshold on (none below it, at
+    the lower bound's eps past the lock none at all), so the forces at ``low`` and ``high``
+    differ by ``least(high) - most(low)`` or more, whichever came first: the stuck-cell
+    interlock of a quiet load cell (:meth:`mkm.bench.worker.Acquisition.unmoved_cell`)."""
+    pressure_bar = np.linspace(0.0, 1.1 * config.regulator.max_pressure_bar, n)
+    eps = config.muscle.eps
+    least = SURE_FRACTION * _thickwall_N(config, pressure_bar, eps, -1)
+    most = (1.0 + FRICTION_FRACTION) * _thickwall_N(config, pressure_bar, eps, +1)
+    return pressure_bar, least, most
 
 
 #: A muscle pulling less than this share of its force at its rest length, at the highest planned

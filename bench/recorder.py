@@ -21,6 +21,7 @@ outcome of the vent: it returns what went wrong.
 from __future__ import annotations
 
 import collections
+import copy
 import dataclasses
 import threading
 import time
@@ -133,8 +134,21 @@ class Recorder:
     def path(self) -> Path:
         return self.writer.path
 
-    def save(self) -> None:
-        self.writer.write_meta(self.meta)
+    def save(self, books: RunMeta | None = None) -> None:
+        """Write run.json: ``books`` (the meta as a queued save took it), else the meta now."""
+        self.writer.write_meta(self.meta if books is None else books)
+
+    def _books(self) -> RunMeta:
+        """The meta as it is now, for a save queued now: the writer reaches it once the rows
+        queued before it are on disk, and the gaps, steps and counts the loop adds meanwhile
+        belong to rows queued after it (:meth:`_written_books`)."""
+        return copy.deepcopy(self.meta)
+
+    def _written_books(self, books: RunMeta) -> RunMeta:
+        """``books`` with the count of the samples on disk, which the writer keeps itself: the
+        rows queued before the save, as they are written when it is reached."""
+        books.counters["samples"] = self.meta.counters["samples"]
+        return books
 
     # the queue: the loop puts, the thread writes ---------------------------------------------
 
@@ -225,7 +239,7 @@ class Recorder:
         elif kind == "command":
             self.writer.append_command(payload)
         elif kind == "save":
-            self._save_retrying()
+            self._save_retrying(self._written_books(payload))
         elif kind == "last try":  # the refused rows, with the final record's room given back
             self.writer.release_reserve()
             try:
@@ -233,11 +247,12 @@ class Recorder:
             except OSError:  # said by refusals()
                 self._keep_unwritten()
         elif kind == "sync":  # the run's books before a step it may not outlive
+            done, books = payload
             try:
-                self._save_retrying()
+                self._save_retrying(self._written_books(books))
                 self.writer.sync()
             finally:
-                payload.set()
+                done.set()
 
     def _write_unwritten(self) -> None:
         """Append the rows held; those the disk refused before go first, after what of them
@@ -316,7 +331,7 @@ class Recorder:
 
     def tare(self, tare: dict) -> None:
         self.meta.tare = tare
-        self._put("save")
+        self._put("save", self._books())
 
     def raise_failure(self) -> None:
         """Raise the first write the disk refused that the loop has not been told of."""
@@ -380,7 +395,7 @@ class Recorder:
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
         done = threading.Event()
-        self._put("sync", done)
+        self._put("sync", (done, self._books()))
         done.wait(timeout_s)
 
     def finish(self, status: RunStatus, reason: str) -> list[str]:
@@ -432,11 +447,11 @@ class Recorder:
         return (f"the recorder's thread failed ({self.crashed}): the {held} samples it held "
                 f"were written as the run ended{left}")
 
-    def _save_retrying(self) -> None:
+    def _save_retrying(self, books: RunMeta | None = None) -> None:
         """:meth:`save`, tried again while another program holds run.json open."""
         for attempt in range(LOCKED_RETRIES + 1):
             try:
-                self.save()
+                self.save(books)
                 return
             except PermissionError:  # held open by another program, mostly briefly
                 if attempt == LOCKED_RETRIES:

@@ -923,10 +923,11 @@ class BenchRun:
             tare_std_N = float(tare["std_N"])
             noise_N = ZERO_NOISE_SIGMAS * tare_std_N + 2 * step_N
             # a cell that strayed more than an ADC step at the tare, or held its code while the
-            # monitor rose (a quieter one), and reads one value around the vent is stuck: said
+            # monitor rose (a quieter one) or moved as no live cell allows (the interlock of
+            # unmoved_cell), and reads one value around the vent is stuck: said
             # as such, the vent still not verified by it
             stuck = (before[0], tare_std_N) if acq.forces_unchanged() and (
-                tare_std_N > step_N or acq.one_code_throughout()) else None
+                tare_std_N > step_N or acq.one_code_throughout() or acq.unmoved) else None
             fell = still_pulling(fell, *forces, noise_N, max(before[1], acq.pressure_commanded_bar),
                                  stuck, force_per_bar(self.recorder.step_rows, noise_N))
             fell = monitor_unmoved(fell, before[0], *forces, noise_N)

@@ -23,7 +23,7 @@ from mkm.bench.backend import BenchError
 from mkm.bench.budget import Instrument, step_budget
 from mkm.bench.config import BenchConfig, Step, plan_steps
 from mkm.bench.storage import StepRecord
-from mkm.bench.worker import STUCK_CELL_S, Acquisition
+from mkm.bench.worker import STUCK_CELL_S, UNMOVED_CELL_STEPS, Acquisition
 
 
 def settle_reached(t_s: np.ndarray, force_N: np.ndarray, pressure_bar: np.ndarray,
@@ -303,9 +303,10 @@ def one_code_warning(tare: dict, config: BenchConfig) -> str:
         cell = config.loadcell
         return (f"the load cell spreads {stray_V * 1e3:.2f} mV rms at 0 bar "
                 f"({stray_V * cell.sensitivity_N_per_V:.2f} N), less than one ADC step "
-                f"({step_mV:.2f} mV): the stuck-cell interlock cannot tell it stuck from quiet "
-                "and is off for this run, so a cell that sticks is found only at the run's end, "
-                "the force limit blind meanwhile")
+                f"({step_mV:.2f} mV): one code held {STUCK_CELL_S:g} s cannot tell it stuck from "
+                "quiet, so a cell that sticks is found only once the pressure rises or falls by "
+                f"what must move the muscle's force {UNMOVED_CELL_STEPS} ADC steps (never where it "
+                "stays slack), the force limit blind meanwhile")
     read = (f"on one ADC code for its last {held_s:.1f} s, where it strayed less than a step "
             "before")
     return (f"the tare read the load cell {read}: a stuck or disconnected cell reads so, and "

@@ -8,7 +8,8 @@ goes, :class:`StopSignals` handles:
 - a second ``SIGINT``, ``SIGTERM`` (kill, service stop), ``SIGHUP`` (terminal or SSH session
   closed; POSIX), ``SIGBREAK`` (Ctrl-Break; Windows), and every other signal that would end
   the process while it keeps its default action (:data:`ENDING_SIGNAL_NAMES`: ``SIGQUIT`` from
-  Ctrl-\\, ``SIGUSR1``, ``SIGALRM``, ``SIGXCPU``, ...; POSIX; and :data:`REALTIME_SIGNALS`):
+  Ctrl-\\, ``SIGUSR1``, ``SIGALRM``, ``SIGXCPU``, ``SIGABRT``, ``SIGTRAP``, ``SIGSYS`` sent
+  with kill, ...; POSIX; and :data:`REALTIME_SIGNALS`):
   raise :class:`StopSignal` at once, which unwinds to the run's shutdown: vent, close the
   device, record. The exit status is 128 + N. Once it is raised, a further signal is only
   noted (the run's reason names it): nothing cuts the vent or the record;
@@ -42,12 +43,17 @@ from contextlib import contextmanager
 
 STOP_SIGNAL_NAMES = ("SIGINT", "SIGTERM", "SIGHUP", "SIGBREAK")
 STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(signal, n))
-#: the other signals whose default action ends the process (POSIX; Ctrl-\ sends SIGQUIT):
-#: stop signals too while they keep that default (one a profiler or a test timer handles is
-#: left to it). The faults a process raises on itself (SIGSEGV, SIGBUS, SIGABRT, ...) are not
-#: signals a Python handler can run after.
+#: the other signals whose default action ends the process (Ctrl-\ sends SIGQUIT; SIGABRT,
+#: SIGTRAP and SIGSYS sent with kill; POSIX: Windows has SIGABRT, but its kill ends a process
+#: with no signal to handle): stop signals too while they keep that default (one a profiler or
+#: a test timer handles is left to it; faulthandler's dump of SIGABRT, which Python sees as the
+#: default, is not). An abort() still ends the process once the handler returns (C's abort
+#: restores the default and raises again), the bench marker making the next command vent.
+#: SIGSEGV, SIGBUS, SIGFPE and SIGILL are left alone: raised by a fault, the faulting
+#: instruction would run again after a handler, in a loop that holds the pressure.
 ENDING_SIGNAL_NAMES = ("SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM", "SIGXCPU", "SIGVTALRM",
-                       "SIGPROF", "SIGPWR", "SIGSTKFLT", "SIGIO")
+                       "SIGPROF", "SIGPWR", "SIGSTKFLT", "SIGIO", "SIGABRT", "SIGTRAP", "SIGSYS",
+                       "SIGEMT")
 #: the real-time signals (POSIX; Linux: ``kill -s RTMIN+1``), whose default action ends the
 #: process too: stop signals as well
 REALTIME_SIGNALS = (tuple(range(signal.SIGRTMIN, signal.SIGRTMAX + 1))
@@ -202,8 +208,12 @@ class StopSignals:
 
         For a block read from the device and its recording: a signal raised between the two
         would lose samples the device no longer holds. The delay is the block's own: a DAQmx
-        read blocks in C, where no Python handler runs anyway.
+        read blocks in C, where no Python handler runs anyway. Inside another such block it
+        holds nothing of its own: the outer one raises at its end.
         """
+        if self._deferring:
+            yield
+            return
         self._deferring = True
         try:
             yield

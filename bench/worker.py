@@ -46,14 +46,17 @@ import time
 from collections import deque
 from contextlib import nullcontext
 
+import numpy as np
+
 from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
+from mkm.bench.preflight import FRICTION_FRACTION, force_bounds_N
 from mkm.bench.recorder import Recorder
 from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
-from mkm.bench.vent import SETTLED_S
+from mkm.bench.vent import SETTLED_S, ZERO_NOISE_SIGMAS
 
 RAIL_MARGIN_V = 2e-3  # within 2 LSB (1.22 mV each) of the +-10 V rails: the reading is clipped
 # The muscle's limit is max_pressure_bar. A regulator at its command reads within its accuracy
@@ -71,6 +74,11 @@ MARKER_WAIT_S = 0.5
 #: (twenty readings at 10 Hz; one step of noise keeps two readings on one code at most a third
 #: of the time), and behind it the force limit is not watched
 STUCK_CELL_S = 2.0
+#: a load cell held on one code while the measured pressure rose or fell by what must move the
+#: muscle's force this many ADC steps (:func:`mkm.bench.preflight.force_bounds_N`) is stuck or
+#: disconnected, however quiet: a force that moves one step moves any cell's code; the rest is
+#: margin for the bounds
+UNMOVED_CELL_STEPS = 4
 
 
 class Stop(Exception):
@@ -139,6 +147,14 @@ class Acquisition:
         self._same_low_bar = math.inf
         self._same_rise = (0.0, math.nan, math.nan)
         self._pressure_from_s: float | None = None
+        # the last three plausible readings [bar] since the load cell's code was first read
+        # (their median: one glitch moves none), the lowest and the highest of those medians
+        # with when each was read [s], and the muscle's force bounds over pressure (built
+        # once, as first needed): :meth:`unmoved_cell`
+        self._last3_bar: deque = deque(maxlen=3)
+        self._held_low = self._held_high = (math.nan, math.nan)
+        self._force_bounds: tuple | None = None
+        self.unmoved = ""  # why unmoved_cell found the load cell stuck ("" while it did not)
         self.highest_bar = 0.0
         self.command_bar = 0.0
         self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
@@ -358,7 +374,16 @@ class Acquisition:
         if math.isfinite(cell_V) and (self._same_cell is None or self._same_cell[0] != cell_V):
             self._same_cell = (cell_V, index / self.rate_hz)
             self._same_low_bar, self._same_rise = math.inf, (0.0, math.nan, math.nan)
+            self._held_low = self._held_high = (math.nan, math.nan)
+            self._last3_bar.clear()  # the readings since the code was first read
         if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
+            self._last3_bar.append(pressure)
+            if len(self._last3_bar) == 3:
+                median = statistics.median(self._last3_bar)
+                if not median >= self._held_low[0]:  # NaN: the first
+                    self._held_low = (median, index / self.rate_hz)
+                if not median <= self._held_high[0]:
+                    self._held_high = (median, index / self.rate_hz)
             self._same_low_bar = min(self._same_low_bar, pressure)
             if pressure - self._same_low_bar > self._same_rise[0]:
                 self._same_rise = (pressure - self._same_low_bar, self._same_low_bar, pressure)
@@ -384,7 +409,7 @@ class Acquisition:
             # the measured pressure is the monitor's, or the operator's manometer reading: a
             # hand regulator turned past the limit is as over-pressured as an electronic one
             over = self._overpressure(t_s, pressure)
-            fault = over or self._stuck_cell(t_s, cell_V, force)
+            fault = over or self._stuck_cell(t_s, cell_V, force) or self.unmoved_cell(force)
             trip = fault or self._interlock(index, force, pressure, cell_V, monitor_V, flags)
             if trip:
                 flags.append("interlock")
@@ -416,6 +441,62 @@ class Acquisition:
                 f"{self.tare_std_V * self.cell.sensitivity_N_per_V:.2f} N at the tare: a stuck "
                 "or disconnected load cell, behind which the force limit is not watched; check "
                 "its cable, amplifier and supply")
+
+    def unmoved_cell(self, force: float) -> str | None:
+        """The load cell has held one code while the pressure, read as medians of three, rose
+        or fell between a low and a high that must move the muscle's force
+        :data:`UNMOVED_CELL_STEPS` ADC steps or more: stuck or disconnected (its message), or
+        None. Each pressure is taken the monitor's accuracy towards the other; the force
+        differs between them by at least the larger of
+
+        - the force the muscle surely pulls at the high pressure less the most it could pull
+          at the low one (:func:`mkm.bench.preflight.force_bounds_N`): a muscle slack over the
+          span (its eps, its threshold) makes no force to move;
+        - the force read, less what its zero may be off (the tare's noise, two ADC steps and
+          the zero drift a run allows), times the pressures' ratio less one, the braid's
+          friction taken off both ends: at a fixed length the force grows at least in
+          proportion to the pressure (above a threshold, none below it), and a live cell
+          that held its code read that force at the low pressure too.
+
+        It needs no noise at the tare, so it watches a cell quieter than a step, which
+        :meth:`_stuck_cell` cannot tell from a stuck one."""
+        if self._same_cell is None or len(self._last3_bar) < 3:
+            return None
+        (low, low_s), (high, high_s) = self._held_low, self._held_high
+        if not high > low:
+            return None
+        offset_bar, gain = self.config.regulator.reading_bounds()
+        high_bar, low_bar = high - offset_bar - gain * high, low + offset_bar + gain * low
+        pressure_bar, least_N, most_N = self._bounds()
+        rise_N = (float(np.interp(high_bar, pressure_bar, least_N))
+                  - float(np.interp(low_bar, pressure_bar, most_N)))
+        step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
+            * self.cell.sensitivity_N_per_V
+        held_N = force - (ZERO_NOISE_SIGMAS * self.tare_std_V * self.cell.sensitivity_N_per_V
+                          + 2 * step_N
+                          + self.cell.zero_drift_fraction_fs * self.cell.capacity_N)
+        if held_N > 0 and low_bar > 0:
+            sure = (1.0 - FRICTION_FRACTION) / (1.0 + FRICTION_FRACTION)
+            rise_N = max(rise_N, held_N * (sure * high_bar / low_bar - 1.0))
+        if not rise_N >= UNMOVED_CELL_STEPS * step_N:
+            return None
+        read = "the monitor" if self.electronic else "the manometer's reading"
+        cell_V, since_s = self._same_cell
+        span = (f"rose from {round(low, 2) + 0.0:.2f} to {high:.2f}" if low_s < high_s else
+                f"fell from {high:.2f} to {round(low, 2) + 0.0:.2f}")
+        self.unmoved = (f"force interlock: the load cell read {cell_V:.4f} V ({force:+.2f} N) "
+                        f"unchanged from {since_s:g} s while {read} {span} bar, which moves "
+                        f"the muscle's force by {rise_N:.1f} N or more at eps "
+                        f"{self.config.muscle.eps:g} ({rise_N / step_N:.0f} ADC steps of "
+                        f"{step_N:.2f} N): a stuck or disconnected load cell, behind which the "
+                        "force limit is not watched; check its cable, amplifier and supply")
+        return self.unmoved
+
+    def _bounds(self) -> tuple:
+        """The muscle's force bounds over pressure (:func:`force_bounds_N`), built once."""
+        if self._force_bounds is None:
+            self._force_bounds = force_bounds_N(self.config)
+        return self._force_bounds
 
     def _commanded_at(self, index: int) -> float:
         """The command [bar] sample ``index`` was acquired under: the last one issued at or
@@ -624,6 +705,7 @@ class Acquisition:
         self._recent_N = deque((force - shift_N for force in self._recent_N),
                                maxlen=self._recent_N.maxlen)
         self.tare_offset_V, self.tare_std_V = offset_V, std_V
+        self._bounds()  # built before any pressure, not in the rise they judge
 
     def hung_said(self) -> str:
         """Why the read hung and what the watchdog's vent did, or ""."""
@@ -712,36 +794,39 @@ class Acquisition:
         self.asked_bar = max(self.asked_bar, clamped)
         if self.lease is not None and clamped > 0:
             self._mark(clamped)
-        # watched until the device's clock is read after the write (a driver call too)
-        self.writing = (time.monotonic(), clamped)
-        try:
-            self.backend.write_command(volts)
-            ok = self.written = True
-            self.command_bar = clamped
-            if clamped > 0:
-                self.pressure_commanded_bar = clamped
-            self.vented = clamped == 0.0
-            meta = self.recorder.meta
-            stopped_at = self.stop_time()
-            if clamped == 0.0 and stopped_at is not None and meta.stop_to_vent_s is None:
-                meta.stop_to_vent_s = time.monotonic() - stopped_at
-                meta.vented_at_unix_s = time.time()
-        finally:
+        # a stop signal is held until the write and its books are done: one raised as the
+        # write returns left a pressure on the device that the books called a failed write
+        with self.guard():
+            # watched until the device's clock is read after the write (a driver call too)
+            self.writing = (time.monotonic(), clamped)
             try:
-                issued = self._clock_index()
+                self.backend.write_command(volts)
+                ok = self.written = True
+                self.command_bar = clamped
+                if clamped > 0:
+                    self.pressure_commanded_bar = clamped
+                self.vented = clamped == 0.0
+                meta = self.recorder.meta
+                stopped_at = self.stop_time()
+                if clamped == 0.0 and stopped_at is not None and meta.stop_to_vent_s is None:
+                    meta.stop_to_vent_s = time.monotonic() - stopped_at
+                    meta.vented_at_unix_s = time.time()
             finally:
-                self.writing = None
-            if ok:
-                self._issued.append((issued, clamped))
-                # a command every sample still to be read was acquired after is the oldest needed
-                while len(self._issued) > 1 and self._issued[1][0] <= self.next_index:
-                    self._issued_before_bar = self._issued.pop(0)[1]
-            self.recorder.meta.last_command_bar = self.command_bar
-            if ok and self.lease is not None and clamped == 0.0:
-                lease = self.lease  # after the vent, never waited for: the shutdown checks it
-                lease.post(lambda: lease.command(0.0))
-            self.recorder.command(CommandRecord(issued / self.rate_hz, issued, clamped, volts,
-                                                ok, purpose))
+                try:
+                    issued = self._clock_index()
+                finally:
+                    self.writing = None
+                if ok:
+                    self._issued.append((issued, clamped))
+                    # the oldest still needed: every sample to be read was acquired after it
+                    while len(self._issued) > 1 and self._issued[1][0] <= self.next_index:
+                        self._issued_before_bar = self._issued.pop(0)[1]
+                self.recorder.meta.last_command_bar = self.command_bar
+                if ok and self.lease is not None and clamped == 0.0:
+                    lease = self.lease  # after the vent, never waited for: the shutdown checks it
+                    lease.post(lambda: lease.command(0.0))
+                self.recorder.command(CommandRecord(issued / self.rate_hz, issued, clamped, volts,
+                                                    ok, purpose))
         if ok and clamped > 0 and self.hung:
             # a pressure that went out after the watchdog's vent (its write hung): vented again
             # at once; the run stops at its next block

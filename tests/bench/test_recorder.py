@@ -2,6 +2,7 @@
 
 import errno
 import re
+import time
 from pathlib import Path
 
 import pytest
@@ -651,6 +652,20 @@ def test_a_recorder_thread_that_fails_stops_the_run_vented_and_loses_no_sample(c
     monkeypatch.setattr(Recorder, "_what", staticmethod(failing))
     backend = SimBackend(config)
     run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    # the loop reads on once the thread has taken samples 60 and failed: on the virtual clock
+    # it ran ahead of a thread that a loaded machine slowed, past the run's last step (a
+    # complete run then, below), and the test failed once so
+    read = backend.read
+
+    def read_once_the_thread_failed(n, timeout):
+        block = read(n, timeout)
+        if block.first_index > 60 and run.recorder is not None:
+            deadline = time.monotonic() + 30
+            while not run.recorder.crashed and time.monotonic() < deadline:
+                time.sleep(0.001)
+        return block
+
+    backend.read = read_once_the_thread_failed
     out = []
     runner = threading.Thread(target=lambda: out.append(run.execute()), daemon=True)
     runner.start()
@@ -665,6 +680,54 @@ def test_a_recorder_thread_that_fails_stops_the_run_vented_and_loses_no_sample(c
     assert recorded.meta.counters["samples"] == len(recorded.samples) > 61
     assert recorded.commands["purpose"].iloc[-1] == "vent" and recorded.meta.vent_check["verified"]
     assert backend.bench.pressure_bar < config.safety.vent_below_bar  # the truth: vented
+    assert recorded.meta.steps_done < 3  # stopped there, not at the end
+
+
+def test_a_recorder_thread_that_fails_after_the_last_step_is_said_every_sample_kept(
+        config, tmp_path, monkeypatch):
+    # The other order, a loaded machine's: the thread reaches samples 60 only once the loop
+    # has done its last step and vented. The run is complete, every sample written as it
+    # ended, and says what failed, exit 2.
+    import threading
+
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    what, append = Recorder._what, RunWriter.append_samples
+    vented = threading.Event()
+
+    def failing(kind, payload):
+        if kind == "samples" and payload[0].sample == 60:
+            raise MemoryError("injected")
+        return what(kind, payload)
+
+    def lagging(self, rows):
+        if rows[-1].sample >= 50:
+            vented.wait(30)  # a net under a broken run: it vents at its end
+        append(self, rows)
+
+    monkeypatch.setattr(Recorder, "_what", staticmethod(failing))
+    monkeypatch.setattr(RunWriter, "append_samples", lagging)
+    backend = SimBackend(config)
+    write = backend.write_command
+
+    def noting_the_end(volts):
+        write(volts)
+        if volts == 0.0 and max(v for _, v in backend.commands) > 0:
+            vented.set()
+
+    backend.write_command = noting_the_end
+    result = BenchRun(config, backend, tmp_path, handle_signals=False,
+                      notify=lambda m: None).execute()
+    assert result.status == "complete" and result.exit_code == 2, result.reason
+    assert re.fullmatch(r"all 3 steps done; the recorder's thread failed \(MemoryError: "
+                        r"injected\): the \d+ samples it held were written as the run ended",
+                        result.reason), result.reason
+    recorded = load_run(result.path)
+    assert list(recorded.samples["sample"]) == list(range(len(recorded.samples)))  # none lost
+    assert recorded.meta.counters["samples"] == len(recorded.samples)
+    assert recorded.meta.steps_done == 3 and recorded.meta.vent_check["verified"]
 
 
 def test_a_close_that_fails_otherwise_than_the_disk_still_records_the_outcome(tmp_path, capsys,
@@ -1245,3 +1308,55 @@ def test_samples_the_state_folder_cannot_keep_either_are_said_and_hold_nothing(
         assert said.group(2).endswith(f"are being written to {kept}, which did not answer "
                                       "within 2 s (it hangs): kept once it answers, lost if "
                                       "this process ends first")
+
+
+def test_run_json_saved_behind_rows_holds_the_books_of_the_rows_on_disk(config, tmp_path,
+                                                                         monkeypatch):
+    # The tare's run.json is queued behind samples 0-9, which the disk is still writing; the
+    # loop meanwhile queues samples 10-19, then records 5 samples lost after them. The writer
+    # wrote run.json with the books as they were when it reached the save: the gap after
+    # sample 19 recorded while samples.csv held samples 0-9, a record (a crash there leaves
+    # it) whose gap lies past its rows. It writes them as they were when the save was queued,
+    # with the count of the rows on disk.
+    import threading
+
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.sim import SimBackend
+    from mkm.bench.storage import Gap, Sample
+
+    def rows(first):
+        return [Sample(k, k / 10, -1, "tare", 0.0, 0.0, 0.0, 0.015, 1.0, 0.0, "")
+                for k in range(first, first + 10)]
+
+    release, writing = threading.Event(), threading.Event()
+    append, write_meta = RunWriter.append_samples, RunWriter.write_meta
+    saved = []
+
+    def held_at_the_first_block(self, block):
+        if block[0].sample == 0:
+            writing.set()
+            release.wait(30)
+        append(self, block)
+
+    def recorded(self, meta):
+        csv = self.path / "samples.csv"
+        on_disk = csv.read_text().count("\n") - 1 if csv.exists() else 0
+        saved.append((list(meta.gaps), meta.lost_samples, meta.counters["samples"], on_disk))
+        write_meta(self, meta)
+
+    monkeypatch.setattr(RunWriter, "append_samples", held_at_the_first_block)
+    monkeypatch.setattr(RunWriter, "write_meta", recorded)
+    backend = SimBackend(config)
+    recorder = Recorder(tmp_path, config, backend.open(), 2, (1.0, 2.0))
+    saved.clear()  # the folder's first run.json
+    recorder.samples(rows(0))
+    assert writing.wait(30)  # the writer holds samples 0-9
+    recorder.tare({"offset_V": 0.015})  # the save, queued behind them
+    recorder.samples(rows(10))
+    recorder.gap(Gap(19, 5, 2.0, 2.5, "overflow"))
+    release.set()
+    assert recorder.wait_written(30)
+    assert saved == [([], 0, 10, 10)]  # the books of samples 0-9, as on disk
+    assert recorder.finish("complete", "done") == []
+    final = load_run(recorder.path).meta
+    assert final.lost_samples == 5 and final.counters["samples"] == 20  # the end's books whole

@@ -80,6 +80,8 @@ def assert_every_flushed_sample(run, flushed):
 STOPS = [("SIGINT", 1), ("SIGINT", 2), ("SIGTERM", 1), ("SIGTERM", 2)]
 if hasattr(signal, "SIGHUP"):
     STOPS.append(("SIGHUP", 1))
+if hasattr(signal, "SIGABRT") and sys.platform != "win32":  # os.kill ends it on Windows
+    STOPS.append(("SIGABRT", 1))
 
 
 @pytest.mark.slow  # sends signals to runs in subprocesses
@@ -395,18 +397,21 @@ def test_a_signal_during_the_devices_open_is_held_until_the_open_ends(config, tm
 
 
 @pytest.mark.skipif(not hasattr(signal, "SIGQUIT"), reason="POSIX signals")
-@pytest.mark.parametrize("name", ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGXCPU", "SIGRTMIN+1"])
+@pytest.mark.parametrize("name", ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGXCPU", "SIGRTMIN+1",
+                                  "SIGABRT", "SIGTRAP", "SIGSYS"])
 def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path, name):
     # Ctrl-\ (SIGQUIT), or a SIGUSR1, SIGUSR2, SIGXCPU (ulimit -t), a real-time signal
-    # (`kill -s RTMIN+1`) sent mid-step: their default action ended the process at once, the
-    # regulator holding the step's pressure (the AO keeps its last value), run.json
-    # "running", the block in hand lost. Each is a stop signal: vented at once, recorded with
-    # it, exit 128 + N.
+    # (`kill -s RTMIN+1`), a SIGABRT, SIGTRAP or SIGSYS sent with kill mid-step: their default
+    # action ended the process at once, the regulator holding the step's pressure (the AO
+    # keeps its last value), run.json "running", the block in hand lost. Each is a stop
+    # signal: vented at once, recorded with it, exit 128 + N.
     from mkm.bench.run import BenchRun
     from mkm.bench.sim import SimBackend
 
     if name.startswith("SIGRTMIN+") and not hasattr(signal, "SIGRTMIN"):
         pytest.skip("no real-time signals on this platform")
+    if not name.startswith("SIGRTMIN+") and not hasattr(signal, name):
+        pytest.skip(f"no {name} on this platform")
     signum = (signal.SIGRTMIN + int(name.removeprefix("SIGRTMIN+"))
               if name.startswith("SIGRTMIN+") else getattr(signal, name))
     backend = SimBackend(config)
@@ -431,6 +436,48 @@ def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path,
     assert backend.commands[-1][1] == 0.0 and run.commands["purpose"].iloc[-1] == "vent"
     assert run.meta.vent_check["verified"]
     assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
+
+
+def test_a_signal_as_a_pressure_write_returns_leaves_it_in_the_books(config, tmp_path):
+    # SIGTERM arrives as the write of the 0.5 bar step returns: the stop cut the books, the
+    # device holding 0.5 bar while commands.csv called the write failed and the run's last
+    # pressure commanded stayed 0 bar (what a vent that then fails says the regulator may still
+    # hold). The signal is held until the write's books are kept, then vents as ever.
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    backend = SimBackend(config)
+    write = backend.write_command
+
+    def signalled_as_it_returns(volts):
+        write(volts)
+        if volts > 0:
+            signal.raise_signal(signal.SIGTERM)  # its handler runs as the write returns
+
+    backend.write_command = signalled_as_it_returns
+    run = BenchRun(config, backend, tmp_path, handle_signals=True, notify=lambda m: None)
+    result = run.execute()
+    assert result.status == "aborted" and result.exit_code == 128 + signal.SIGTERM
+    assert result.reason == "stopped by SIGTERM at once; vented"
+    commands = load_run(result.path).commands
+    assert list(commands["purpose"]) == ["vent", "vent", "step", "vent"]
+    assert list(commands["ok"]) == [True] * 4  # the step's write reached the device
+    assert commands["command_bar"].iloc[2] == 0.5 == run.acquisition.pressure_commanded_bar
+    volts = [v for _, v in backend.commands]  # the device's own: 0.5 bar, then vents only
+    assert volts.count(1.25) == 1 and set(volts[volts.index(1.25) + 1:]) == {0.0}
+
+
+@pytest.mark.slow  # starts a process that aborts
+def test_an_abort_still_ends_the_process_with_the_stop_handlers_installed(tmp_path):
+    # SIGABRT is a stop signal while a run goes; the process's own abort() (a driver's failed
+    # assertion) must still end it, not return into the code that aborted: C's abort restores
+    # the default action and raises again once the handler returns
+    script = ("import os\nfrom mkm.bench.signals import StopSignals\n"
+              "with StopSignals():\n    os.abort()\n")
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=30, cwd=tmp_path)
+    expected = -signal.SIGABRT if sys.platform != "win32" else 3
+    assert proc.returncode == expected, proc.stderr
 
 
 @pytest.mark.skipif(not hasattr(signal, "SIGPROF"), reason="POSIX signals")
