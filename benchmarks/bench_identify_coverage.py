@@ -346,6 +346,21 @@ def each_draw(draws: int, seed: int, departures, run, columns) -> list[dict]:
     return rows
 
 
+def departures_arg(parser, given: str, known) -> list[str]:
+    """The comma-separated ``--departures`` ``given``, each one of ``known``; else the parser's
+    one-line error naming them."""
+    departures = [d.strip() for d in given.split(",") if d.strip()]
+    if not departures or any(d not in known for d in departures):
+        parser.error(f"--departures {given!r}: expected some of {','.join(known)}")
+    return departures
+
+
+def write_record(path, **fields) -> None:
+    """The benchmark's record at ``path``: provenance, then ``fields`` in their order (JSON)."""
+    Path(path).write_text(json.dumps({**provenance(), **fields}, indent=1, default=jsonable),
+                          encoding="utf-8")
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--draws", type=int, default=3 * len(DEPARTURES))
@@ -356,11 +371,7 @@ def main(argv=None) -> int:
                         "tables imported with this --accuracy (see the module docstring)")
     parser.add_argument("--out", help="write the rows and provenance as JSON here")
     args = parser.parse_args(argv)
-    departures = [d.strip() for d in args.departures.split(",") if d.strip()]
-    unknown = [d for d in departures if d not in DEPARTURES]
-    if unknown or not departures:
-        parser.error(f"--departures {args.departures!r}: expected some of "
-                     f"{','.join(DEPARTURES)}")
+    departures = departures_arg(parser, args.departures, DEPARTURES)
     rng = np.random.default_rng(args.seed)
     config = load_config()
     rows = []
@@ -393,15 +404,13 @@ def main(argv=None) -> int:
                   "heldout_band95_percent": r["heldout"]["band95_median_percent"],
                   "heldout_error_over_band": r["heldout"]["median_error_over_band"],
                   "seconds": r["seconds"]} for r in rows]
-        Path(args.out).write_text(json.dumps({
-            **provenance(), "tables_accuracy": args.tables, "rows": table,
-            "summary": summary, "draws": rows,
-            "targets": "every parameter's 95 % interval covers the truth in >= 90 % of the "
-                       "draws or a misfit line was printed; silent misses: 0 beyond what "
-                       "chance explains (chance_silent_draws; none far: truth outside by "
-                       "more than the interval's half-width); held-out runs inside their "
-                       "printed band in >= 90 % of cases"},
-            indent=1, default=jsonable), encoding="utf-8")
+        write_record(
+            args.out, tables_accuracy=args.tables, rows=table, summary=summary, draws=rows,
+            targets="every parameter's 95 % interval covers the truth in >= 90 % of the "
+                    "draws or a misfit line was printed; silent misses: 0 beyond what "
+                    "chance explains (chance_silent_draws; none far: truth outside by "
+                    "more than the interval's half-width); held-out runs inside their "
+                    "printed band in >= 90 % of cases")
     return 0
 
 

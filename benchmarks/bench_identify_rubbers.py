@@ -55,12 +55,11 @@ import warnings
 from pathlib import Path
 
 import numpy as np
-from bench_identify_coverage import instrument_warning, judge, truths
+from bench_identify_coverage import instrument_warning, judge, truths, write_record
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
-from mkm.core.records import jsonable, provenance
 from mkm.fem.limits import lock_eps
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
@@ -339,11 +338,9 @@ def main(argv=None) -> int:
     summary = summarise(rows)
     print(json.dumps(summary, indent=1))
     if args.out:
-        Path(args.out).write_text(json.dumps(
-            {**provenance(), "seed": args.seed, "summary": summary, "rows": table(rows),
-             "declare_rubber": args.declare_rubber,
-             "draws": rows, "target": "every draw covered or warned: no SILENT miss, no crash"},
-            indent=1, default=jsonable), encoding="utf-8")
+        write_record(args.out, seed=args.seed, summary=summary, rows=table(rows),
+                     declare_rubber=args.declare_rubber, draws=rows,
+                     target="every draw covered or warned: no SILENT miss, no crash")
     return 0
 
 

@@ -40,19 +40,23 @@ parameters and notes, the seeds and provenance.
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
-from bench_identify_coverage import each_draw, instrument_warning, judge
+from bench_identify_coverage import (
+    departures_arg,
+    each_draw,
+    instrument_warning,
+    judge,
+    write_record,
+)
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
-from mkm.core.records import jsonable, provenance
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
 from mkm.surrogate.design import BOX
@@ -224,10 +228,7 @@ def main(argv=None) -> int:
                         help="what identify fits (mkm identify's --params; default its own)")
     parser.add_argument("--out", help="write the table, the draws and provenance as JSON here")
     args = parser.parse_args(argv)
-    departures = [d.strip() for d in args.departures.split(",") if d.strip()]
-    unknown = [d for d in departures if d not in DEPARTURES]
-    if unknown or not departures:
-        parser.error(f"--departures {args.departures!r}: expected some of {','.join(DEPARTURES)}")
+    departures = departures_arg(parser, args.departures, DEPARTURES)
     config = load_config()
     rows = each_draw(args.draws, args.seed, departures,
                      lambda seed, departure, out: one(draw(seed, departure, config), out, config,
@@ -237,11 +238,8 @@ def main(argv=None) -> int:
     print(pd.DataFrame(table)[["departure", "covered", "warned", "silent", "refused",
                                "misfit_line", "zero_line"]].to_string(index=False))
     if args.out:
-        Path(args.out).write_text(json.dumps(
-            {**provenance(), "seed": args.seed, "params": args.params, "rows": table,
-             "draws": rows,
-             "target": "every draw covered or warned: no SILENT miss"},
-            indent=1, default=jsonable), encoding="utf-8")
+        write_record(args.out, seed=args.seed, params=args.params, rows=table, draws=rows,
+                     target="every draw covered or warned: no SILENT miss")
     return 0
 
 

@@ -46,7 +46,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from bench_identify_coverage import each_draw, truths
+from bench_identify_coverage import departures_arg, each_draw, truths, write_record
 from bench_identify_rubbers import (
     config_for,
     draw,
@@ -59,7 +59,6 @@ from bench_identify_rubbers import (
 
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
-from mkm.core.records import jsonable, provenance
 
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid")
@@ -208,10 +207,7 @@ def main(argv=None) -> int:
                         help="the departures, comma-separated (default all)")
     parser.add_argument("--out", help="write the table, the draws and provenance as JSON here")
     args = parser.parse_args(argv)
-    departures = [d.strip() for d in args.departures.split(",") if d.strip()]
-    unknown = [d for d in departures if d not in DEPARTURES]
-    if unknown or not departures:
-        parser.error(f"--departures {args.departures!r}: expected some of {','.join(DEPARTURES)}")
+    departures = departures_arg(parser, args.departures, DEPARTURES)
     if args.draws < 1:
         parser.error(f"--draws {args.draws}: expected at least 1")
     rows = each_draw(args.draws, args.seed, departures,
@@ -220,11 +216,8 @@ def main(argv=None) -> int:
     summary = summarise(rows)
     print(json.dumps(summary, indent=1))
     if args.out:
-        Path(args.out).write_text(json.dumps(
-            {**provenance(), "seed": args.seed, "summary": summary, "rows": table(rows),
-             "draws": rows,
-             "target": "every draw covered or warned: no SILENT miss, no crash"},
-            indent=1, default=jsonable), encoding="utf-8")
+        write_record(args.out, seed=args.seed, summary=summary, rows=table(rows), draws=rows,
+                     target="every draw covered or warned: no SILENT miss, no crash")
     return 0
 
 
