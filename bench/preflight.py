@@ -113,8 +113,8 @@ def oversized_warning(config) -> str | None:
             f"errors, fractions of its capacity, weigh on every force (`mkm check`'s expected "
             f"uncertainty): at the lowest step, {low_bar:g} bar, the muscle pulls about "
             f"{force_N:.2g} N, of which one ADC step ({step_N:.2g} N) is "
-            f"{100 * step_N / force_N:.2g} % and the cell's non-linearity ({linearity_N:.2g} N) "
-            f"{100 * linearity_N / force_N:.2g} %; a cell of {low_N:.3g} to {high_N:.3g} N "
+            f"{percent(step_N / force_N)} % and the cell's non-linearity ({linearity_N:.2g} N) "
+            f"{percent(linearity_N / force_N)} %; a cell of {low_N:.3g} to {high_N:.3g} N "
             f"capacity ({low_N / G_N_PER_KG:.2g} to {high_N / G_N_PER_KG:.2g} kg) suits this "
             "muscle")
 
@@ -175,13 +175,18 @@ def limits_warning(config) -> str | None:
         share = _limit_N(packaged, name) / packaged_N
         what = next(w for n, _, w in FORCE_LIMITS if n == name).format(allowed_N)
         passes = "" if said else "passes "
-        said.append(f"{name}={value:g} {passes}{100 * allowed_N / force_N:.2g} % ({what})")
+        said.append(f"{name}={value:g} {passes}{percent(allowed_N / force_N)} % ({what})")
         to_set.append(f"{name} to about {value * share * force_N / allowed_N:.2g}")
     return (f"the settle and noise limits are sized for a stronger muscle: at its lowest step, "
             f"{low_bar:g} bar, this one pulls about {force_N:.2g} N (Equation 2 on the braid's "
             f"diameter at eps 0), and these limits pass more than {100 * LIMIT_SHARE:g} % of it "
             f"into a step: {_listed(said)}; set {_listed(to_set)} (the share the packaged "
             f"example's take of the {packaged_N:.0f} N its muscle pulls at {packaged_bar:g} bar)")
+
+
+def percent(share: float) -> str:
+    """``share`` in percent to two digits, without an exponent (``1.6``, ``23``, ``130``)."""
+    return f"{100 * share:.0f}" if share >= 0.1 else f"{100 * share:.2g}"
 
 
 def _listed(items: list[str]) -> str:

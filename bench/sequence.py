@@ -22,7 +22,7 @@ from mkm.bench import backends
 from mkm.bench.backend import BenchError
 from mkm.bench.budget import Instrument, step_budget
 from mkm.bench.config import BenchConfig, Step, plan_steps
-from mkm.bench.preflight import LIMIT_SHARE, lowest_step
+from mkm.bench.preflight import LIMIT_SHARE, lowest_step, percent
 from mkm.bench.storage import StepRecord
 from mkm.bench.worker import STUCK_CELL_S, UNMOVED_CELL_STEPS, Acquisition
 
@@ -63,7 +63,7 @@ def settle_warning(tare_std_N: float, config: BenchConfig) -> str:
     low_bar, force_N = lowest_step(config)
     if 3 * tare_std_N > LIMIT_SHARE * force_N:
         return (said + f"a limit this cell can settle under, about {3 * tare_std_N:.2g} N, is "
-                f"{100 * 3 * tare_std_N / force_N:.2g} % of the {force_N:.2g} N the muscle pulls "
+                f"{percent(3 * tare_std_N / force_N)} % of the {force_N:.2g} N the muscle pulls "
                 f"at the lowest step, {low_bar:g} bar: the cell is too noisy for this muscle, use "
                 "a quieter or smaller one (`mkm check` names the capacities that suit it) "
                 "(Ctrl-C stops the run at a safe point, vented)")
