@@ -123,8 +123,8 @@ def oversized_warning(config) -> str | None:
 G_N_PER_KG = 9.80665
 #: A settle or noise limit in newtons that lets more than this share of the force the muscle
 #: pulls at its lowest planned step into a step's force is sized for a stronger muscle: the
-#: packaged example's limits take at most 5.2 % of its muscle's (95 N at 0.25 bar), so a
-#: staircase from half that pressure still passes.
+#: packaged example's limits take at most 5.2 % of its muscle's (95 N at 0.25 bar), about
+#: half of it.
 LIMIT_SHARE = 0.1
 #: The limits that bound a step's force: the setting, and what it lets into the force [N]
 #: from its value (a hold's or a tare's scatter; a trend over the hold, judged settled)
@@ -147,11 +147,12 @@ def lowest_step(config) -> tuple[float, float]:
     return low_bar, expected_force_N(config, low_bar, eps=0.0)
 
 
-def _limit_N(config, name: str) -> float:
-    """What the limit ``name`` of :data:`FORCE_LIMITS` lets into a step's force [N]."""
+def _limit(config, name: str, allowed) -> tuple[float, float]:
+    """The value of the limit ``name`` (``section.key``) in ``config`` and what it lets into a
+    step's force [N]."""
     section, key = name.split(".")
-    allowed = next(f for n, f, _ in FORCE_LIMITS if n == name)
-    return allowed(config, getattr(getattr(config, section), key))
+    value = getattr(getattr(config, section), key)
+    return value, allowed(config, value)
 
 
 def limits_warning(config) -> str | None:
@@ -163,19 +164,19 @@ def limits_warning(config) -> str | None:
     low_bar, force_N = lowest_step(config)
     if force_N <= 0:
         return None
-    loose = [name for name, _, _ in FORCE_LIMITS if _limit_N(config, name) > LIMIT_SHARE * force_N]
+    loose = [(name, allowed, what) for name, allowed, what in FORCE_LIMITS
+             if _limit(config, name, allowed)[1] > LIMIT_SHARE * force_N]
     if not loose:
         return None
     packaged = load_config()
     packaged_bar, packaged_N = lowest_step(packaged)
     said, to_set = [], []
-    for name in loose:
-        section, key = name.split(".")
-        value, allowed_N = getattr(getattr(config, section), key), _limit_N(config, name)
-        share = _limit_N(packaged, name) / packaged_N
-        what = next(w for n, _, w in FORCE_LIMITS if n == name).format(allowed_N)
+    for name, allowed, what in loose:
+        value, allowed_N = _limit(config, name, allowed)
+        share = _limit(packaged, name, allowed)[1] / packaged_N
         passes = "" if said else "passes "
-        said.append(f"{name}={value:g} {passes}{percent(allowed_N / force_N)} % ({what})")
+        said.append(f"{name}={value:g} {passes}{percent(allowed_N / force_N)} % "
+                    f"({what.format(allowed_N)})")
         to_set.append(f"{name} to about {value * share * force_N / allowed_N:.2g}")
     return (f"the settle and noise limits are sized for a stronger muscle: at its lowest step, "
             f"{low_bar:g} bar, this one pulls about {force_N:.2g} N (Equation 2 on the braid's "
