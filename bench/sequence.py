@@ -65,8 +65,7 @@ def settle_warning(tare_std_N: float, config: BenchConfig) -> str:
         return (said + f"a limit this cell can settle under, about {3 * tare_std_N:.2g} N, is "
                 f"{percent(3 * tare_std_N / force_N)} % of the {force_N:.2g} N the muscle pulls "
                 f"at the lowest step, {low_bar:g} bar: the cell is too noisy for this muscle, use "
-                "a quieter or smaller one (`mkm check` names the capacities that suit it) "
-                "(Ctrl-C stops the run at a safe point, vented)")
+                "a quieter or smaller one (Ctrl-C stops the run at a safe point, vented)")
     return (said + f"for this cell set [settle] max_force_std_N to about {3 * tare_std_N:.2g} "
             "(Ctrl-C stops the run at a safe point, vented)")
 
