@@ -11,6 +11,10 @@
   form on the inner diameter ``D0`` is (1 + 2 t0 / D0)^2 lower, 1.7 times on a 5 mm tube with a
   0.8 mm wall. A warning, not a refusal: the interlock protects the cell. So is a cell the
   muscle's largest force uses less than a tenth of (:func:`oversized_warning`);
+- :func:`limits_warning`: whether a settle or noise limit in newtons (``[settle]
+  max_force_std_N``, ``max_force_slope_N_per_s``, ``[safety] tare_max_std_N``) lets more than
+  :data:`LIMIT_SHARE` of the force the muscle pulls at its lowest planned step into a step's
+  force, with the values that take the share the packaged example's take of its muscle's;
 - :func:`slack_warning`: whether the muscle pulls at its eps at all up to the highest planned
   pressure (the thick-wall model's threshold, which Equation 2 has not: a share of its force at
   its rest length, :data:`SLACK_FRACTION`);
@@ -25,7 +29,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from mkm.bench.config import MIN_FORCE_LIMIT_FRACTION
+from mkm.bench import backends
+from mkm.bench.config import MIN_FORCE_LIMIT_FRACTION, load_config
 from mkm.fem.eq2 import BraidLock, chou_hannaford
 from mkm.fem.eq2 import braid_lock as fem_braid_lock
 from mkm.fem.limits import LIMITS, PRACTICAL_RANGE
@@ -91,18 +96,103 @@ def oversized_warning(config) -> str | None:
     """The message when the muscle's largest force, Equation 2 on the braid's diameter at eps 0
     and the bench's highest pressure (``regulator.max_pressure_bar``: the cell serves every run
     of the muscle, whatever its eps and staircase), is below a tenth of the load cell's
-    capacity, else None."""
-    capacity_N, top = config.loadcell.capacity_N, config.regulator.max_pressure_bar
+    capacity, else None. It names what one ADC step and the data sheet's non-linearity take of
+    the force at the lowest planned step (:func:`lowest_step`)."""
+    cell, top = config.loadcell, config.regulator.max_pressure_bar
     largest_N = expected_force_N(config, top, eps=0.0)
-    if largest_N >= MIN_FORCE_LIMIT_FRACTION * capacity_N or largest_N <= 0:
+    if largest_N >= MIN_FORCE_LIMIT_FRACTION * cell.capacity_N or largest_N <= 0:
         return None
     low_N = expected_force_N(config, top, True, 0.0) / config.safety.force_limit_fraction
+    high_N = largest_N / MIN_FORCE_LIMIT_FRACTION
+    low_bar, force_N = lowest_step(config)
+    step_N = backends.entry(config.daq.backend).capabilities.ai_lsb_V * cell.sensitivity_N_per_V
+    linearity_N = cell.nonlinearity_fraction_fs * cell.capacity_N
     return (f"the muscle develops at most about {largest_N:.3g} N at {top:g} bar (Equation 2 on "
-            f"the braid's diameter at eps 0), {100 * largest_N / capacity_N:.2g} % of "
-            f"loadcell.capacity_N={capacity_N:g}: the cell's noise, ADC step and data-sheet "
+            f"the braid's diameter at eps 0), {100 * largest_N / cell.capacity_N:.2g} % of "
+            f"loadcell.capacity_N={cell.capacity_N:g}: the cell's noise, ADC step and data-sheet "
             f"errors, fractions of its capacity, weigh on every force (`mkm check`'s expected "
-            f"uncertainty); a cell of {low_N:.3g} to {largest_N / MIN_FORCE_LIMIT_FRACTION:.3g} N "
-            "capacity suits this muscle")
+            f"uncertainty): at the lowest step, {low_bar:g} bar, the muscle pulls about "
+            f"{force_N:.2g} N, of which one ADC step ({step_N:.2g} N) is "
+            f"{percent(step_N / force_N)} % and the cell's non-linearity ({linearity_N:.2g} N) "
+            f"{percent(linearity_N / force_N)} %; a cell of {low_N:.3g} to {high_N:.3g} N "
+            f"capacity ({low_N / G_N_PER_KG:.2g} to {high_N / G_N_PER_KG:.2g} kg) suits this "
+            "muscle")
+
+
+#: Standard gravity [N/kg]: load cells are sold by the mass they weigh
+G_N_PER_KG = 9.80665
+#: A settle or noise limit in newtons that lets more than this share of the force the muscle
+#: pulls at its lowest planned step into a step's force is sized for a stronger muscle: the
+#: packaged example's limits take at most 5.2 % of its muscle's (95 N at 0.25 bar), about
+#: half of it.
+LIMIT_SHARE = 0.1
+#: The limits that bound a step's force: the setting, and what it lets into the force [N]
+#: from its value (a hold's or a tare's scatter; a trend over the hold, judged settled)
+FORCE_LIMITS = (
+    ("settle.max_force_std_N", lambda c, v: v, "a hold scattering {:.2g} N rms"),
+    ("settle.max_force_slope_N_per_s", lambda c, v: v * c.settle.hold_s,
+     "{:.2g} N of trend over the hold"),
+    ("safety.tare_max_std_N", lambda c, v: v, "a tare, taken off every force, scattering "
+     "{:.2g} N rms"),
+)
+
+
+def lowest_step(config) -> tuple[float, float]:
+    """The lowest planned pressure [bar] and the force [N] the muscle pulls there at its rest
+    length (Equation 2 on the braid's diameter, the thick-wall model's force at eps 0): the
+    force the settle and noise limits and the load cell are judged against, at eps 0 as the
+    cell is, so every run of the muscle on one configuration says the same (at eps > 0 the
+    steps near the threshold pull a small share of any muscle's force)."""
+    low_bar = min(config.sequence.pressures_bar)
+    return low_bar, expected_force_N(config, low_bar, eps=0.0)
+
+
+def _limit(config, name: str, allowed) -> tuple[float, float]:
+    """The value of the limit ``name`` (``section.key``) in ``config`` and what it lets into a
+    step's force [N]."""
+    section, key = name.split(".")
+    value = getattr(getattr(config, section), key)
+    return value, allowed(config, value)
+
+
+def limits_warning(config) -> str | None:
+    """The message when a limit of :data:`FORCE_LIMITS` lets more than :data:`LIMIT_SHARE` of
+    the force at the lowest planned step (:func:`lowest_step`) into a step's force, naming each
+    such limit, its value, its share and a value to set: the share the packaged example's
+    takes of its muscle's force at its lowest step. A warning, not a scaled default: a value
+    the configuration states is the one its runs use and record."""
+    low_bar, force_N = lowest_step(config)
+    if force_N <= 0:
+        return None
+    loose = [(name, allowed, what) for name, allowed, what in FORCE_LIMITS
+             if _limit(config, name, allowed)[1] > LIMIT_SHARE * force_N]
+    if not loose:
+        return None
+    packaged = load_config()
+    packaged_bar, packaged_N = lowest_step(packaged)
+    said, to_set = [], []
+    for name, allowed, what in loose:
+        value, allowed_N = _limit(config, name, allowed)
+        share = _limit(packaged, name, allowed)[1] / packaged_N
+        passes = "" if said else "passes "
+        said.append(f"{name}={value:g} {passes}{percent(allowed_N / force_N)} % "
+                    f"({what.format(allowed_N)})")
+        to_set.append(f"{name} to about {value * share * force_N / allowed_N:.2g}")
+    return (f"the settle and noise limits are sized for a stronger muscle: at its lowest step, "
+            f"{low_bar:g} bar, this one pulls about {force_N:.2g} N (Equation 2 on the braid's "
+            f"diameter at eps 0), and these limits pass more than {100 * LIMIT_SHARE:g} % of it "
+            f"into a step: {_listed(said)}; set {_listed(to_set)} (the share the packaged "
+            f"example's take of the {packaged_N:.0f} N its muscle pulls at {packaged_bar:g} bar)")
+
+
+def percent(share: float) -> str:
+    """``share`` in percent to two digits, without an exponent (``1.6``, ``23``, ``130``)."""
+    return f"{100 * share:.0f}" if share >= 0.1 else f"{100 * share:.2g}"
+
+
+def _listed(items: list[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``."""
+    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} and {items[-1]}"
 
 
 def practical_range_warning(config) -> str | None:
@@ -209,7 +299,7 @@ def slack_warning(config) -> str | None:
 
 
 def warnings(config) -> list[str]:
-    """Every preflight message for ``config`` (braid lock, a slack muscle, load cell, practical
-    range)."""
+    """Every preflight message for ``config`` (braid lock, a slack muscle, load cell, settle and
+    noise limits, practical range)."""
     return [w for w in (braid_lock(config), slack_warning(config), loadcell_warning(config),
-                        practical_range_warning(config)) if w]
+                        limits_warning(config), practical_range_warning(config)) if w]

@@ -22,6 +22,7 @@ from mkm.bench import backends
 from mkm.bench.backend import BenchError
 from mkm.bench.budget import Instrument, step_budget
 from mkm.bench.config import BenchConfig, Step, plan_steps
+from mkm.bench.preflight import LIMIT_SHARE, lowest_step, percent
 from mkm.bench.storage import StepRecord
 from mkm.bench.worker import STUCK_CELL_S, UNMOVED_CELL_STEPS, Acquisition
 
@@ -49,15 +50,24 @@ def settle_reached(t_s: np.ndarray, force_N: np.ndarray, pressure_bar: np.ndarra
 
 def settle_warning(tare_std_N: float, config: BenchConfig) -> str:
     """What a load cell noisier at rest than ``settle.max_force_std_N`` does to a run (no step
-    can settle: each waits ``settle.timeout_s`` and is recorded unsettled), or ""."""
+    can settle: each waits ``settle.timeout_s`` and is recorded unsettled), or "". The limit it
+    asks for is three times the spread; where that lets more than
+    :data:`~mkm.bench.preflight.LIMIT_SHARE` of the force at the lowest planned step into a
+    step, the cell is too noisy for the muscle, and it asks for a cell instead."""
     st = config.settle
     if not tare_std_N > st.max_force_std_N:
         return ""
-    return (f"the load cell spreads {tare_std_N:.2f} N rms at 0 bar, above "
+    said = (f"the load cell spreads {tare_std_N:.2f} N rms at 0 bar, above "
             f"settle.max_force_std_N={st.max_force_std_N:g}: no step can settle, each will wait "
-            f"settle.timeout_s={st.timeout_s:g} s and be recorded settled = false; for this cell "
-            f"set [settle] max_force_std_N to about {3 * tare_std_N:.2g} (Ctrl-C stops the run "
-            "at a safe point, vented)")
+            f"settle.timeout_s={st.timeout_s:g} s and be recorded settled = false; ")
+    low_bar, force_N = lowest_step(config)
+    if 3 * tare_std_N > LIMIT_SHARE * force_N:
+        return (said + f"a limit this cell can settle under, about {3 * tare_std_N:.2g} N, is "
+                f"{percent(3 * tare_std_N / force_N)} % of the {force_N:.2g} N the muscle pulls "
+                f"at the lowest step, {low_bar:g} bar: the cell is too noisy for this muscle, use "
+                "a quieter or smaller one (Ctrl-C stops the run at a safe point, vented)")
+    return (said + f"for this cell set [settle] max_force_std_N to about {3 * tare_std_N:.2g} "
+            "(Ctrl-C stops the run at a safe point, vented)")
 
 
 #: the halves of a vented reading differ by more than this many standard errors: still falling
