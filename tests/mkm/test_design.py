@@ -484,6 +484,25 @@ def test_a_margin_a_braid_one_degree_steeper_takes_away_is_said():
     assert design_record(result)["steeper_braid_N"] == [steeper]
 
 
+def test_the_fe_search_refines_a_braid_angle_range_too():
+    """Where the FE model searches (3 bar, past the surrogate's 2.5), a range of theta0 was
+    tried at its five values alone (28, 30.5, 33, 35.5, 38 deg): 500 N at 3 bar, eps 0.1 in
+    D0 28:34 x t0 1.5:3 chose 33 deg and 30 x 1.5 mm, 48.54 mm wide at 3 bar, as the fixed
+    33 deg finds. Refined as the surrogate's range is, it finds an angle between two of the
+    five, about 32 deg, that meets the force with the 28 mm tube: narrower than at 33 deg and
+    than at 32 deg fixed (28 x 2 mm, 48.07 mm), and the force it found there is the FE's."""
+    reqs, box = ["500N@3bar,eps=0.1"], {"D0_mm": (28.0, 34.0), "t0_mm": (1.5, 3.0)}
+    found = search(reqs, {**box, "theta0_deg": (28.0, 38.0)}, surrogate="surrogate:kind=muscle-gp")
+    assert found.fe_search
+    ranged = found.feasible.iloc[0]
+    at_32 = search(reqs, {**box, "theta0_deg": 32.0},
+                   surrogate="surrogate:kind=muscle-gp").feasible.iloc[0]
+    assert ranged["outer_diameter_mm"] < at_32["outer_diameter_mm"] < 48.5
+    assert 31.5 < ranged["theta0_deg"] < 32.5 and ranged["D0_mm"] == 28.0
+    assert ranged["r1_surrogate_N"] == pytest.approx(
+        fe_force(28.0, ranged["t0_mm"], 3.0, 0.1, ranged["theta0_deg"]), rel=1e-9)
+
+
 def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run):
     # 3 bar is above the surrogate's 2.5 bar; a narrow box keeps the FE search to a few sweeps;
     # the kind named, the practical range's does not search in its place
