@@ -783,16 +783,16 @@ def _near_lock(req: Requirement, theta0_low_deg: float) -> str:
             "lock lies at a larger eps")
 
 
-def _angle_unsearched(result: Search) -> str:
-    """The clause a search stopped by the housing ends with where it held the braid angle at
-    one value: at a given width the force depends on the angle both ways (a smaller one pulls
-    more per braid diameter and swells wider), so a range of it may hold a narrower muscle."""
+def _angle_unsearched(result: Search, may: str = "hold a narrower muscle") -> str:
+    """The clause an infeasible search ends with where it held the braid angle at one value: at
+    a given width the force depends on the angle both ways (a smaller one pulls more per braid
+    diameter and swells wider), so a range of it ``may`` do what the one angle did not."""
     low, high = result.constraints["theta0_deg"]
     if high > low:
         return ""
     lowest, highest = PRACTICAL_RANGE.theta0_deg
-    return (f"; the braid angle was held at {low:.4g} deg: a range of it may hold a narrower "
-            f"muscle (--theta0 {lowest:g}:{highest:g})")
+    return (f"; the braid angle was held at {low:.4g} deg: a range of it may {may} "
+            f"(--theta0 {lowest:g}:{highest:g})")
 
 
 def _infeasible_message(result: Search, constraints: Constraints) -> str:
@@ -806,14 +806,16 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
                 + _beyond_practical_range(best, result.requirements, result.calibration))
     pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
     closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]
-    parts = []
+    parts, near_lock = [], False
     for k, req in enumerate(result.requirements, start=1):
         force = closest[f"r{k}_surrogate_N"]
         short = req.force_N - force
+        lock = _near_lock(req, result.constraints["theta0_deg"][0]) if short > 0 else ""
+        near_lock |= bool(lock)
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force")
-            + (_near_lock(req, result.constraints["theta0_deg"][0]) if short > 0 else ""))
+            + lock)
     edge = ""
     if edges := result.edges(closest):  # the box, not the physics, may be short
         ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
@@ -824,6 +826,9 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
             + "; ".join(parts) + edge
+            # near the lock, that clause says to search smaller angles already
+            + ("" if near_lock else _angle_unsearched(result, "meet them, a smaller one "
+                                                      "pulling more"))
             + _beyond_practical_range(closest, result.requirements, result.calibration))
 
 
