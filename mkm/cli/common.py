@@ -382,7 +382,7 @@ def say_defaults(args, model, prediction, given, rubber_flags: str) -> None:
     (Equation 2 at its 30.778 deg: 389.8 N for a 19 x 0.5 mm muscle at 6 bar, eps 0.15, that
     the FE and Equation 2 at 32.99 deg put at 301.5 and 301.2 N).
     ``rubber_flags``: how this command takes a rubber. Nothing where all were given."""
-    said = _defaults_taken(model, prediction, set(given))
+    said = _defaults_taken(model, prediction.params, set(given), prediction)
     if not said:
         return
     flags = ", ".join(["--theta0"] * any("theta0 " in s for s in said)
@@ -390,26 +390,20 @@ def say_defaults(args, model, prediction, given, rubber_flags: str) -> None:
     say(args, "note", f"not given: {'; '.join(said)} ({flags} to give the muscle's own)")
 
 
-def _defaults_taken(model, prediction, given: set[str]) -> list[str]:
-    """The phrases of :func:`say_defaults`: for auto, those of each model that answered."""
+def _defaults_taken(model, params: dict, given: set[str], prediction=None) -> list[str]:
+    """The phrases of :func:`say_defaults` for ``model`` and the ``params`` it predicted with;
+    for auto, those of each model that answered its ``prediction``."""
     from mkm.fem.calibration import Calibration
 
     if model.name == "auto":
         from mkm.auto import spec_of
 
-        used = dict.fromkeys(str(u) for u in prediction.extras["model_used"].ravel())
         said = []
-        for name in used:
-            try:
-                candidate = model.build(spec_of(name, model.table), **model.muscle)
-            except ValueError:  # no answer of its own (a fallback without an entry)
-                continue
-            own = _defaults_taken(candidate, candidate.predict(
-                prediction.pressure_bar.ravel()[:1], prediction.D0_mm.ravel()[:1],
-                prediction.t0_mm.ravel()[:1], prediction.eps.ravel()[:1]), given)
+        for name in dict.fromkeys(str(u) for u in prediction.extras["model_used"].ravel()):
+            candidate = model.build(spec_of(name, model.table), **model.muscle)
+            own = _defaults_taken(candidate, candidate.params(), given)
             said += [f"by {name}, {s}" if i == 0 else s for i, s in enumerate(own)]
         return said
-    params = prediction.params
     surrogate = hasattr(model, "kind")  # its defaults are the FE model's (default_parameters)
     key = FE_KEY if surrogate else model.calibration_key
     calibration = getattr(model, "calibration", None) or Calibration.shipped()
