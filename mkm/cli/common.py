@@ -369,3 +369,64 @@ def emit_prediction(prediction, out: str | None, model=None) -> None:
         print(f"wrote {path} and {sidecar_path(path).name}", file=sys.stderr)
     else:
         write_prediction_csv(prediction, sys.stdout)
+
+
+#: the FE model's calibration entry: the braid angle mkm design and mkm identify state
+FE_KEY = "axisym"
+
+
+def say_defaults(args, model, prediction, given, rubber_flags: str) -> None:
+    """One note on stderr naming the braid angle and rubber ``model`` took where ``given`` (the
+    parameter names the user set) lacks them, and where from: each rung has its own calibrated
+    angle, so a muscle designed at the FE's and checked with another rung is another braid
+    (Equation 2 at its 30.778 deg: 389.8 N for a 19 x 0.5 mm muscle at 6 bar, eps 0.15, that
+    the FE and Equation 2 at 32.99 deg put at 301.5 and 301.2 N).
+    ``rubber_flags``: how this command takes a rubber. Nothing where all were given."""
+    said = _defaults_taken(model, prediction.params, set(given), prediction)
+    if not said:
+        return
+    flags = ", ".join(["--theta0"] * any("theta0 " in s for s in said)
+                      + [rubber_flags] * any("rubber " in s for s in said))
+    say(args, "note", f"not given: {'; '.join(said)} ({flags} to give the muscle's own)")
+
+
+def _defaults_taken(model, params: dict, given: set[str], prediction=None) -> list[str]:
+    """The phrases of :func:`say_defaults` for ``model`` and the ``params`` it predicted with;
+    for auto, those of each model that answered its ``prediction``."""
+    from mkm.fem.calibration import Calibration
+
+    if model.name == "auto":
+        from mkm.auto import spec_of
+
+        said = []
+        for name in dict.fromkeys(str(u) for u in prediction.extras["model_used"].ravel()):
+            candidate = model.build(spec_of(name, model.table), **model.muscle)
+            own = _defaults_taken(candidate, candidate.params(), given)
+            said += [f"by {name}, {s}" if i == 0 else s for i, s in enumerate(own)]
+        return said
+    surrogate = hasattr(model, "kind")  # its defaults are the FE model's (default_parameters)
+    key = FE_KEY if surrogate else model.calibration_key
+    calibration = getattr(model, "calibration", None) or Calibration.shipped()
+    where = ("the shipped fem/calibration.json" if calibration.is_shipped
+             else str(calibration.path))
+    entry = calibration.entries.get(key, {})
+    said = []
+    theta0 = params.get("theta0_deg")
+    if "theta0_deg" not in given and isinstance(theta0, int | float):
+        identified = "identified" in entry
+        text = (f"theta0 {theta0:g} deg, the muscle's identified with {key} ({where})"
+                if identified else
+                f"theta0 {theta0:g} deg, the FE model's calibrated angle ({key} in {where})"
+                if surrogate else f"theta0 {theta0:g} deg, {model.name}'s own calibrated angle "
+                f"({key} in {where})")
+        fe = calibration.entries.get(FE_KEY, {}).get("theta0_deg")
+        if not identified and fe is not None and abs(fe - theta0) > 0.005:
+            text += f", not the FE model's {fe:g} deg that mkm design and mkm identify state"
+        said.append(text)
+    rubber = [k for k in ("C10_MPa", "C01_MPa") if k not in given and k in params]
+    if rubber:
+        source = (f"the identified muscle's ({key} in {where})" if "C10_MPa" in entry
+                  else "Silastic S, the nominal rubber")
+        said.append("rubber " + ", ".join(f"{k[:3]} {params[k]:g}" for k in rubber)
+                    + f" MPa, {source}")
+    return said

@@ -20,6 +20,7 @@ from mkm.cli.common import (
     model_from_args,
     parse_within,
     say,
+    say_defaults,
     shared_help,
     spec_from_args,
     sweep_grid,
@@ -211,6 +212,8 @@ def _solve(args) -> int:
 
         print(explain(prediction, label=model_label), file=sys.stderr)
     emit_prediction(_answered(prediction, model), args.out, model)
+    say_defaults(args, model, prediction, dict(spec.params),
+                 f"--model {args.model}{',' if ':' in args.model else ':'}C10_MPa=X,C01_MPa=Y")
     outside = _outside_practical_range(prediction, args.D0, args.t0)
     if outside:  # computed all the same (inside LIMITS it is a muscle), but never validated
         say(args, "warning", f"outside the practical range every model is validated over "

@@ -18,6 +18,7 @@ from mkm.cli.common import (
     identified_length,
     parse_within,
     say,
+    say_defaults,
     shared_help,
     sweep_grid,
     with_calibration,
@@ -323,6 +324,9 @@ def _predict(args) -> int:
     # answered points kept
     answered = model.answered(prediction)
     emit_prediction(answered, args.out, model)
+    say_defaults(args, model, prediction, [k for k, v in (
+        ("theta0_deg", args.theta0), ("C10_MPa", args.C10), ("C01_MPa", args.C01))
+        if v is not None], "--C10, --C01")
     reasons = [str(r) for r, ok in zip(answered.extras["reason"].ravel(),
                                        prediction.valid.ravel(), strict=True) if not ok]
     locked = sum(r.startswith("past the braid lock") for r in reasons)

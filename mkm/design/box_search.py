@@ -43,8 +43,11 @@ COARSE_STEPS, D0_STEP_MM, T0_STEP_MM, SEEDS, AXIS_VALUES = (0.5, 0.1), 0.05, 0.0
 #: diameter of a design by about 0.15 mm (1.4 mm per deg near the paper's muscle)
 AXIS_RESOLUTION = {"L0_mm": 1.0, "theta0_deg": 0.1}
 #: Coarse cells of D0 and t0 either side of the best design where a new L0 or theta0 is tried:
-#: a step of the angle moves the boundary of what meets a force by a few of them
+#: a step of the angle moves the boundary of what meets a force by a few of them. The FE
+#: search's cells (:data:`FE_SEARCH_STEPS`) are four times the surrogate's in D0 and five in
+#: t0: one either side, 9 FE sweeps a value tried.
 AXIS_NEIGHBOURHOOD_CELLS = 4
+FE_AXIS_NEIGHBOURHOOD_CELLS = 1
 #: Verified designs differ by at least 5 % of the box span in some searched parameter.
 MIN_SEPARATION = 0.05
 #: Surrogate uncertainty: the predictive standard deviation times auto's factor of the kind
@@ -55,8 +58,10 @@ RECORDED_ERROR_FACTOR, FALLBACK_RELATIVE_MARGIN = 2.0, 0.05
 
 #: Where the surrogate was not trained (a requirement above its pressures or outside its eps,
 #: a box beyond its geometry or muscle parameters), the FE model itself searches: on its coarse
-#: mesh (a few tenths of a second a sweep), a coarser grid, no refinement, and the requirements'
-#: margin of :data:`FALLBACK_RELATIVE_MARGIN`; the verification then solves the converged mesh.
+#: mesh (a few tenths of a second a sweep), a coarser grid of D0 x t0 without a fine one, the
+#: ranges of L0 and theta0 refined as the surrogate's are (:func:`_refine_axes`), and the
+#: requirements' margin of :data:`FALLBACK_RELATIVE_MARGIN`; the verification then solves the
+#: converged mesh.
 #: Its box, and the largest pressure it designs for, are the practical range's.
 FE_SEARCH_BOX = {"D0_mm": PRACTICAL_RANGE.D0_mm, "t0_mm": PRACTICAL_RANGE.t0_mm}
 #: The geometry the search box spans (the surrogate's training box spans them too)
@@ -315,14 +320,20 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if outside or unmodelled:
         from mkm.design.fe_verification import fe_model
 
-        models = {f: fe_model(FE_SEARCH_MESH, *f, calibration, gap) for f in families}
+        def model_at(family):
+            return fe_model(FE_SEARCH_MESH, *family, calibration, gap)
+
+        models = {f: model_at(f) for f in families}
         steps, refine = FE_SEARCH_STEPS, False
         why = "; ".join(([f"outside the surrogate's training box ({'; '.join(outside)})"]
                          if outside else []) + unmodelled)
         fe_search = (f"{why}: the FE model ({FE_SEARCH_MESH} mesh) searched instead, on a "
                      f"{steps[0]:g} x {steps[1]:g} mm grid of D0 x t0 (slower and coarser)")
     else:
-        models = {f: _surrogate_for(spec, base, *f, calibration) for f in families}
+        def model_at(family):
+            return _surrogate_for(spec, base, *family, calibration)
+
+        models = {f: model_at(f) for f in families}
         steps, refine, fe_search = COARSE_STEPS, True, ""
 
     start = time.perf_counter()  # the search proper: the surrogates are loaded once
@@ -338,10 +349,8 @@ def search(requirements, constraints: Constraints | dict | None = None,
     dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
     fine = [_fine(evaluate, _family(seed), seed, dD0, dt0, box)
             for _, seed in seeds.iterrows()]
-    cand = _merge([coarse, *fine], objective)
-    if refine:
-        cand = _refine_axes(cand, evaluate, lambda f: _surrogate_for(spec, base, *f, calibration),
-                            box, D0c, t0c, objective)
+    cand = _refine_axes(_merge([coarse, *fine], objective), evaluate, model_at, box, D0c, t0c,
+                        objective, fine=refine)
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
                     fe_search, spec.text, "; ".join(n for n in (searcher_note, rubber_note) if n),
@@ -372,21 +381,23 @@ def _fine(evaluate, family, seed, dD0: float, dt0: float, box: dict) -> pd.DataF
     return evaluate(family, *_walls(*np.meshgrid(D0f, t0f, indexing="ij")))
 
 
-def _refine_axes(cand: pd.DataFrame, evaluate, surrogate_at, box: dict, D0c: np.ndarray,
-                 t0c: np.ndarray, objective: str) -> pd.DataFrame:
+def _refine_axes(cand: pd.DataFrame, evaluate, model_at, box: dict, D0c: np.ndarray,
+                 t0c: np.ndarray, objective: str, fine: bool = True) -> pd.DataFrame:
     """``cand`` with the searched ranges of L0 and theta0 refined around the best design.
 
     The coarse grid holds :data:`AXIS_VALUES` of each range, and the best design lies between
     them as often as not (a braid angle between two of them meets a force with a narrower
     tube). So, halving the step down to :data:`AXIS_RESOLUTION`, the best design's value one
     step either way is tried: its coarse D0 x t0 neighbourhood
-    (:data:`AXIS_NEIGHBOURHOOD_CELLS`), then the fine grid around the best there.
-    ``surrogate_at(family)`` builds the surrogate of a family not yet searched."""
+    (:data:`AXIS_NEIGHBOURHOOD_CELLS`), then, with ``fine``, the fine grid around the best
+    there; without (the FE search, whose grid has no fine one), the neighbourhood of
+    :data:`FE_AXIS_NEIGHBOURHOOD_CELLS` alone. ``model_at(family)`` builds the model of a
+    family not yet searched."""
     axes = [k for k in AXIS_RESOLUTION if box[k][1] > box[k][0]]
     step = {k: (box[k][1] - box[k][0]) / (AXIS_VALUES - 1) for k in axes}
     dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
     dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
-    reach = AXIS_NEIGHBOURHOOD_CELLS + 1e-6
+    reach = (AXIS_NEIGHBOURHOOD_CELLS if fine else FE_AXIS_NEIGHBOURHOOD_CELLS) + 1e-6
     while any(step[k] > AXIS_RESOLUTION[k] for k in axes):
         step = {k: v / 2 for k, v in step.items()}
         seeds = _seeds(cand)
@@ -403,10 +414,10 @@ def _refine_axes(cand: pd.DataFrame, evaluate, surrogate_at, box: dict, D0c: np.
                 family = _family({**best, key: value})
                 if family in evaluate.models:
                     continue
-                evaluate.models[family] = surrogate_at(family)
+                evaluate.models[family] = model_at(family)
                 near = _rank(evaluate(family, D0, t0), objective)
                 frames += [near, *(_fine(evaluate, family, seed, dD0, dt0, box)
-                                   for _, seed in _seeds(near).head(1).iterrows())]
+                                   for _, seed in _seeds(near).head(int(fine)).iterrows())]
         if frames:
             cand = _merge([cand, *frames], objective)
     return cand
@@ -772,16 +783,16 @@ def _near_lock(req: Requirement, theta0_low_deg: float) -> str:
             "lock lies at a larger eps")
 
 
-def _angle_unsearched(result: Search) -> str:
-    """The clause a search stopped by the housing ends with where it held the braid angle at
-    one value: at a given width the force depends on the angle both ways (a smaller one pulls
-    more per braid diameter and swells wider), so a range of it may hold a narrower muscle."""
+def _angle_unsearched(result: Search, may: str = "hold a narrower muscle") -> str:
+    """The clause an infeasible search ends with where it held the braid angle at one value: at
+    a given width the force depends on the angle both ways (a smaller one pulls more per braid
+    diameter and swells wider), so a range of it ``may`` do what the one angle did not."""
     low, high = result.constraints["theta0_deg"]
     if high > low:
         return ""
     lowest, highest = PRACTICAL_RANGE.theta0_deg
-    return (f"; the braid angle was held at {low:.4g} deg: a range of it may hold a narrower "
-            f"muscle (--theta0 {lowest:g}:{highest:g})")
+    return (f"; the braid angle was held at {low:.4g} deg: a range of it may {may} "
+            f"(--theta0 {lowest:g}:{highest:g})")
 
 
 def _infeasible_message(result: Search, constraints: Constraints) -> str:
@@ -795,14 +806,16 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
                 + _beyond_practical_range(best, result.requirements, result.calibration))
     pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
     closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]
-    parts = []
+    parts, near_lock = [], False
     for k, req in enumerate(result.requirements, start=1):
         force = closest[f"r{k}_surrogate_N"]
         short = req.force_N - force
+        lock = _near_lock(req, result.constraints["theta0_deg"][0]) if short > 0 else ""
+        near_lock |= bool(lock)
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force")
-            + (_near_lock(req, result.constraints["theta0_deg"][0]) if short > 0 else ""))
+            + lock)
     edge = ""
     if edges := result.edges(closest):  # the box, not the physics, may be short
         ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
@@ -813,6 +826,9 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
             + "; ".join(parts) + edge
+            # near the lock, that clause says to search smaller angles already
+            + ("" if near_lock else _angle_unsearched(result, "meet them, a smaller one "
+                                                      "pulling more"))
             + _beyond_practical_range(closest, result.requirements, result.calibration))
 
 

@@ -13,6 +13,7 @@ from mkm.design.box_search import (
     BOX_NAMES,
     COARSE_STEPS,
     D0_STEP_MM,
+    FE_SEARCH_STEPS,
     SEEDS,
     T0_STEP_MM,
     Search,
@@ -388,6 +389,17 @@ def _in_mesh_order(meshes) -> list[str]:
     return sorted(set(meshes), key=list(MESH_LEVELS).index)
 
 
+def _resolution(s) -> dict:
+    """The steps the search of ``s`` tried: the FE search's grid of D0 x t0 has no fine one
+    (the fine steps and seeds None)."""
+    coarse, fine = (FE_SEARCH_STEPS, False) if s.fe_search else (COARSE_STEPS, True)
+    return {"coarse_D0_mm": coarse[0], "coarse_t0_mm": coarse[1],
+            "D0_mm": D0_STEP_MM if fine else None, "t0_mm": T0_STEP_MM if fine else None,
+            "refined_seeds": SEEDS if fine else None,
+            "L0_mm and theta0_deg values per range": AXIS_VALUES,
+            "L0_mm and theta0_deg refined to": AXIS_RESOLUTION}
+
+
 def design_record(result: DesignResult) -> dict:
     """What ``designs.json`` records besides provenance (also the ``attrs`` of :func:`design`)."""
     s = result.search
@@ -407,13 +419,7 @@ def design_record(result: DesignResult) -> dict:
                        # "" when the box searched is the surrogate's
                        "box_note": s.box_note(),
                        "seconds": s.seconds,
-                       "resolution": {"coarse_D0_mm": COARSE_STEPS[0],
-                                      "coarse_t0_mm": COARSE_STEPS[1], "D0_mm": D0_STEP_MM,
-                                      "t0_mm": T0_STEP_MM, "refined_seeds": SEEDS,
-                                      "L0_mm and theta0_deg values per range": AXIS_VALUES,
-                                      # the FE search keeps its coarse values: a sweep a try
-                                      "L0_mm and theta0_deg refined to": (
-                                          None if s.fe_search else AXIS_RESOLUTION)}},
+                       "resolution": _resolution(s)},
             # the mesh asked for; a design met within its error has the finer one's forces
             "verification": {"model": "axisym", "mesh": result.mesh,
                              "meshes": _in_mesh_order(result.designs["fe_mesh"]),

@@ -59,6 +59,85 @@ def test_the_help_says_a_stop_off_the_steps_is_not_exceeded(mkm_run):
     assert frame.pressure_bar.tolist() == [0.0, 3.0, 6.0]
 
 
+#: The note of `mkm fem solve` on the braid angle and rubber each physics model takes from the
+#: shipped calibration where none is given (its entries: eq2-inner 30.778, thickwall 33.425,
+#: axisym 32.992 deg; Silastic S's C10 0.0694, C01 0.0628 MPa)
+NOT_THE_FE = ", not the FE model's 32.992 deg that mkm design and mkm identify state"
+SILASTIC_S = "rubber C10 0.0694, C01 0.0628 MPa, Silastic S, the nominal rubber"
+
+
+def defaults_note(model: str) -> str:
+    name = model.partition(":")[0]
+    angle, key = {"eq2": (30.778, "eq2-inner"), "thickwall": (33.425, "thickwall"),
+                  "axisym": (32.992, "axisym")}[name]
+    differs = NOT_THE_FE if name != "axisym" else ""
+    rubber = (f"; {SILASTIC_S} (--theta0, --model {model}{',' if ':' in model else ':'}"
+              "C10_MPa=X,C01_MPa=Y" if name != "eq2" else " (--theta0")
+    return (f"mkm fem solve: note: not given: theta0 {angle:g} deg, {name}'s own calibrated "
+            f"angle ({key} in the shipped fem/calibration.json){differs}{rubber} to give the "
+            "muscle's own)\n")
+
+
+def test_a_rung_checking_a_design_says_the_braid_angle_it_took(mkm_run):
+    """A design at the FE's calibrated 32.99 deg (FE 301.5 N), checked with Equation 2, gave
+    389.8 N at Equation 2's own 30.778 deg and did not say so: the note names the angle taken,
+    where from, and that it is not the FE's. Given the design's angle, Equation 2 agrees within
+    0.1 % (301.2 N) and nothing is left to say (it has no rubber)."""
+    muscle = ["--D0", "19", "--t0", "0.5", "--L0", "250", "--eps", "15%", "--pressures", "6"]
+    code, out, err = mkm_run(["fem", "solve", "--model", "eq2", *muscle])
+    assert code == 0 and pd.read_csv(io.StringIO(out)).force_N.tolist() == [389.765]
+    assert err == defaults_note("eq2")
+    code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--theta0", "32.99", *muscle])
+    assert code == 0 and err == "" and pd.read_csv(io.StringIO(out)).force_N.tolist() == [301.188]
+    code, _, err = mkm_run(["fem", "solve", "--model", "thickwall:C10_MPa=0.1,C01_MPa=0.05",
+                            *muscle])
+    assert code == 0 and err == ("mkm fem solve: note: not given: theta0 33.425 deg, "
+                                 "thickwall's own calibrated angle (thickwall in the shipped "
+                                 f"fem/calibration.json){NOT_THE_FE} (--theta0 to give the "
+                                 "muscle's own)\n")
+
+
+def test_surrogate_predict_says_the_angle_and_rubber_it_took(mkm_run):
+    """The surrogate's defaults are the FE model's calibrated angle and Silastic S, unsaid."""
+    muscle = ["--D0", "40", "--t0", "3", "--eps", "10%", "--L0", "150", "--pressures", "2"]
+    code, _, err = mkm_run(["surrogate", "predict", *muscle, "--no-progress"])
+    assert code == 0 and err.splitlines()[0] == (
+        "mkm surrogate predict: note: not given: theta0 32.992 deg, the FE model's calibrated "
+        f"angle (axisym in the shipped fem/calibration.json); {SILASTIC_S} (--theta0, --C10, "
+        "--C01 to give the muscle's own)")
+    code, _, err = mkm_run(["surrogate", "predict", *muscle, "--theta0", "30", "--C10", "0.07",
+                            "--C01", "0.06", "--no-progress"])
+    assert code == 0 and "note" not in err, err
+
+
+def test_auto_says_the_angle_of_the_model_that_answered(mkm_run):
+    """auto answers with a candidate at the candidate's own calibrated angle: the note names
+    the one that answered (the sidecar's model_used column) and its angle."""
+    code, out, err = mkm_run(["fem", "solve", "--model", "auto", "--D0", "35", "--t0", "2.5",
+                              "--eps", "5%", "--pressures", "2"])
+    (used,) = pd.read_csv(io.StringIO(out)).model_used
+    angle = {"eq2": 30.778, "thickwall": 33.425}.get(used, 32.992)
+    assert code == 0 and f"mkm fem solve: note: not given: by {used}, theta0 {angle:g} deg" in err
+
+
+def test_an_identified_muscle_s_angle_and_rubber_are_said_as_its_own(tmp_path, mkm_run):
+    """With the calibration of a muscle identified with the thick-wall form, its angle and
+    rubber are that muscle's, not a calibrated angle to compare with the FE's."""
+    record = json.loads(CALIBRATION_FILE.read_text(encoding="utf-8"))
+    muscle = {"id": "latex25", "D0_mm": 25.0, "t0_mm": 1.5, "L0_mm": 282.0}
+    record["thickwall"].update(theta0_deg=31.5, C10_MPa=0.1, C01_MPa=0.05, identified={
+        "runs": [{"run": "r1", "path": "runs/r1", "muscle": muscle}]})
+    lab = tmp_path / "calibration.json"
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    code, _, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "25", "--t0", "1.5",
+                            "--eps", "10%", "--pressures", "4", "--calibration", str(lab)])
+    assert code == 0 and err == (
+        f"mkm fem solve: note: not given: theta0 31.5 deg, the muscle's identified with "
+        f"thickwall ({lab}); rubber C10 0.1, C01 0.05 MPa, the identified muscle's (thickwall "
+        f"in {lab}) (--theta0, --model thickwall:C10_MPa=X,C01_MPa=Y to give the muscle's "
+        "own)\n")
+
+
 def test_a_point_past_the_braid_lock_gets_no_force_but_its_reason(mkm_run):
     # Equation 2's -120 N at 1 bar was written as force_N, with only a warning on stderr
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
@@ -70,11 +149,12 @@ def test_a_point_past_the_braid_lock_gets_no_force_but_its_reason(mkm_run):
                                               "converged,reason",
                                               f"0,30,3,0.5,,False,True,{why}",
                                               f"1,30,3,0.5,,False,True,{why}"]
-    assert err == (f"mkm fem solve: warning: 2 of 2 points valid=False (2 {why}): no force "
-                   "written for them (their reason in the reason column)\n")
+    assert err == defaults_note("eq2") + (
+        f"mkm fem solve: warning: 2 of 2 points valid=False (2 {why}): no force written for "
+        "them (their reason in the reason column)\n")
     code, out, err = mkm_run(["fem", "solve", "--model", "eq2", "--D0", "30", "--t0", "3",
                               "--eps", "0.05", "--pressures", "0,1"])
-    assert code == 0 and err == ""
+    assert code == 0 and err == defaults_note("eq2")
 
 
 def test_a_surrogate_sweep_past_its_box_keeps_the_answered_points_only(mkm_run):
@@ -153,9 +233,10 @@ def test_solve_outside_the_practical_range_says_so(mkm_run, model):
     code, out, err = mkm_run(["fem", "solve", "--model", model, "--D0", "35", "--t0", "2.5",
                               "--eps", "0.05", "--pressures", "0,9,12"])
     assert code == 0 and len(out.splitlines()) == 4
-    assert err == ("mkm fem solve: warning: outside the practical range every model is "
-                   "validated over (pressure_bar=12 outside [0, 8]): computed all the same, an "
-                   "extrapolation (`mkm models` states the range)\n")
+    assert err == defaults_note(model) + (
+        "mkm fem solve: warning: outside the practical range every model is validated over "
+        "(pressure_bar=12 outside [0, 8]): computed all the same, an extrapolation (`mkm "
+        "models` states the range)\n")
     rubber = {"eq2": "eq2", "thickwall": "thickwall:C10_MPa=1",  # Equation 2 has no rubber
               "axisym:mesh=coarse": "axisym:mesh=coarse,C10_MPa=1"}[model]
     code, _, err = mkm_run(["fem", "solve", "--model", rubber, "--D0", "80", "--t0", "2.5",
@@ -169,7 +250,8 @@ def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     out = tmp_path / "sweep.csv"
     code, stdout, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
                                  "--eps", "15%", "--out", str(out)])
-    assert code == 0 and stdout == "" and err == f"wrote {out} and sweep.json\n"
+    assert code == 0 and stdout == ""
+    assert err == f"wrote {out} and sweep.json\n" + defaults_note("thickwall")
     assert not out.read_text().startswith("#")  # plain CSV: the metadata is in the sidecar
     header = read_prediction_header(out)
     assert header["model"] == "thickwall" and header["n_points"] == 11

@@ -131,6 +131,27 @@ def test_past_the_lock_names_eps_max():
     assert eps_max < 0.4
 
 
+def held_at(theta0_deg: float) -> str:
+    """The clause an infeasible search at one braid angle ends with (the practical range's
+    15:40 deg to search)."""
+    return (f"; the braid angle was held at {theta0_deg:.4g} deg: a range of it may meet them, "
+            "a smaller one pulling more (--theta0 15:40)")
+
+
+HELD_AT_33 = held_at(32.99)  # the shipped calibration's FE angle, 32.992 deg
+
+
+def test_an_infeasible_force_at_one_braid_angle_says_a_range_of_it_may_meet_it():
+    """A 30 mm tube for 550 N at 2.5 bar, eps 0.1 was infeasible at the calibration's 32.99 deg
+    and said nothing of the angle: over the default surrogate's 28:38 deg it is met at about
+    31 deg (a smaller angle pulls more per braid diameter)."""
+    with pytest.raises(ValueError, match="infeasible") as info:
+        search(["550N@2.5bar,eps=0.1"], {"D0_mm": 30.0})
+    assert str(info.value).endswith(HELD_AT_33), info.value
+    met = search(["550N@2.5bar,eps=0.1"], {"D0_mm": 30.0, "theta0_deg": (28.0, 38.0)})
+    assert met.feasible.iloc[0]["theta0_deg"] < 32.0
+
+
 def test_infeasible_names_the_closest_design_and_its_shortfall():
     with pytest.raises(ValueError, match="infeasible") as info:
         search(["5000N@2bar,eps=0.1"])
@@ -159,13 +180,14 @@ def test_an_infeasible_design_on_the_edge_of_the_box_says_a_larger_box_might_do(
     # naming the option that widens it, its lower end moved out by half the span (2:4 -> 1:4)
     assert err.endswith("; it sits on the edge of the search box t0 2:4 mm: t0 = 2 mm (the "
                         "lower end of 2:4); a larger box might hold a design that meets them: "
-                        "widen it, e.g. --t0 1:4\n")
+                        f"widen it, e.g. --t0 1:4{HELD_AT_33}\n")
     # at the practical range's thinnest wall no larger box can be searched: no such advice
     code, out, err = mkm_run(["design", "--require", "500N@1bar,eps=0.10", "--D0", "50",
                               "--t0", "0.5:4", "--mesh", MESH, "--no-progress", "--out",
                               str(tmp_path)])
     assert code == 2 and "closest: D0 = 50.00 mm, t0 = 0.50 mm" in err
-    assert "edge" not in err and re.search(r"short by \d+ N \(predicted \d+ N\)\n$", err), err
+    assert "edge" not in err and re.search(r"short by \d+ N \(predicted \d+ N\)"
+                                           + re.escape(HELD_AT_33) + "\n$", err), err
 
 
 def test_an_infeasible_requirement_near_the_braid_lock_says_so_and_what_to_change(mkm_run,
@@ -484,6 +506,25 @@ def test_a_margin_a_braid_one_degree_steeper_takes_away_is_said():
     assert design_record(result)["steeper_braid_N"] == [steeper]
 
 
+def test_the_fe_search_refines_a_braid_angle_range_too():
+    """Where the FE model searches (3 bar, past the surrogate's 2.5), a range of theta0 was
+    tried at its five values alone (28, 30.5, 33, 35.5, 38 deg): 500 N at 3 bar, eps 0.1 in
+    D0 28:34 x t0 1.5:3 chose 33 deg and 30 x 1.5 mm, 48.54 mm wide at 3 bar, as the fixed
+    33 deg finds. Refined as the surrogate's range is, it finds an angle between two of the
+    five, about 32 deg, that meets the force with the 28 mm tube: narrower than at 33 deg and
+    than at 32 deg fixed (28 x 2 mm, 48.07 mm), and the force it found there is the FE's."""
+    reqs, box = ["500N@3bar,eps=0.1"], {"D0_mm": (28.0, 34.0), "t0_mm": (1.5, 3.0)}
+    found = search(reqs, {**box, "theta0_deg": (28.0, 38.0)}, surrogate="surrogate:kind=muscle-gp")
+    assert found.fe_search
+    ranged = found.feasible.iloc[0]
+    at_32 = search(reqs, {**box, "theta0_deg": 32.0},
+                   surrogate="surrogate:kind=muscle-gp").feasible.iloc[0]
+    assert ranged["outer_diameter_mm"] < at_32["outer_diameter_mm"] < 48.5
+    assert 31.5 < ranged["theta0_deg"] < 32.5 and ranged["D0_mm"] == 28.0
+    assert ranged["r1_surrogate_N"] == pytest.approx(
+        fe_force(28.0, ranged["t0_mm"], 3.0, 0.1, ranged["theta0_deg"]), rel=1e-9)
+
+
 def test_beyond_the_surrogates_box_the_fe_searches_and_says_so(tmp_path, mkm_run):
     # 3 bar is above the surrogate's 2.5 bar; a narrow box keeps the FE search to a few sweeps;
     # the kind named, the practical range's does not search in its place
@@ -694,7 +735,8 @@ def test_an_infeasible_design_outside_the_practical_range_says_so(tmp_path, mkm_
     code, out, err = mkm_run(["design", "--require", "5000N@2bar,eps=0.05", "--D0", "10",
                               "--t0", "1", "--theta0", "30", "--mesh", MESH, "--no-progress",
                               "--out", str(tmp_path)])
-    assert code == 2 and re.search(r"short by \d+ N \(predicted \d+ N\)\n$", err), err
+    assert code == 2 and re.search(r"short by \d+ N \(predicted \d+ N\)"
+                                   + re.escape(held_at(30)) + "\n$", err), err
 
 
 def test_every_design_figure_carries_its_provenance(tmp_path, mkm_run):
