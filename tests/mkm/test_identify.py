@@ -147,9 +147,14 @@ def test_the_cli_writes_the_calibration_every_command_takes(muscle, tmp_path, mk
     code, unnamed, said = mkm_run([*argv[:2], *argv[4:], "--calibration",
                                    str(out / "calibration.json")])
     assert code == 0 and unnamed == learnt
-    assert said.strip() == ("mkm fem solve: note: --model not given: thickwall, the model the "
-                            "muscle of --calibration was identified with (--model eq2 or another "
-                            "to predict with it)")
+    lab = out / "calibration.json"
+    assert said.splitlines() == [
+        "mkm fem solve: note: --model not given: thickwall, the model the muscle of "
+        "--calibration was identified with (--model eq2 or another to predict with it)",
+        f"mkm fem solve: note: not given: theta0 {entry['theta0_deg']:g} deg, the muscle's "
+        f"identified with thickwall ({lab}); rubber C10 {entry['C10_MPa']:g}, C01 "
+        f"{entry['C01_MPa']:g} MPa, the identified muscle's (thickwall in {lab}) "
+        "(--theta0, --model thickwall:C10_MPa=X,C01_MPa=Y to give the muscle's own)"]
     expected = make_model("thickwall", theta0_deg=entry["theta0_deg"], C10_MPa=entry["C10_MPa"],
                           C01_MPa=entry["C01_MPa"]).predict(2.0, 30.0, 3.0, 0.1).force_N
     row = dict(zip(*(line.split(",") for line in learnt.strip().splitlines()), strict=True))
