@@ -304,7 +304,6 @@ def search(requirements, constraints: Constraints | dict | None = None,
                              f"{'; '.join(outside)}): the practical range's surrogate searched")
             spec, base, domain, outside = wider, wide, wide.domain, []
     at = _predicts_at(base, calibration)
-    length_note = _length_note(constraints, float(at["L0_mm"]), length_origin)
     # the surrogate has no gap: the FE model, which takes it, searches (in the surrogate's box)
     unmodelled = [f"gap_mm={gap:g}, which the surrogate does not model"] if gap else []
     surrogate_box = {"D0_mm": list(domain.D0_mm), "t0_mm": list(domain.t0_mm)}
@@ -315,6 +314,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
            "t0_mm": constraints.t0_mm or default_box["t0_mm"],
            "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
            "theta0_deg": constraints.theta0_deg or (theta0_default,) * 2}
+    length_note = _length_note(constraints, box, length_origin)
     _check_conflicts(requirements, constraints, box, bool(outside), calibration)
     P_work = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
     families = [(float(L0), float(theta0), rubber) for L0 in _axis(box["L0_mm"])
@@ -460,25 +460,29 @@ def _identified_length(constraints: Constraints, calibration: Calibration | None
     return constraints, ""
 
 
-def _length_note(constraints: Constraints, surrogate_L0_mm: float, origin: str) -> str:
-    """The note of a length not given (:attr:`Search.length_note`): the one designed, where it
-    came from (``origin`` of :func:`_identified_length`, else the surrogate's length), that the
-    force depends on it and how to set it; "" where ``--L0`` was given. A design is verified at
-    one length, and its clamped ends take a larger share of a shorter muscle's force (the FE:
-    a 10 x 0.5 mm tube at 6 bar, eps 0.1 pulls 129.4 N 282 mm long, 117.5 N 60 mm long)."""
-    if origin == "identified":
-        L0, where = constraints.L0_mm[0], "the identified muscle's length (--calibration)"
-    elif constraints.L0_mm is None:
-        L0 = surrogate_L0_mm
-        where = ("the default, the length of the paper's muscle" if surrogate_L0_mm == L0_MM
-                 else "the length the surrogate's training data held")
-        if origin:
-            where += f" ({origin})"
-    else:
+def _length_note(constraints: Constraints, box: dict, origin: str) -> str:
+    """The note of a length not given (:attr:`Search.length_note`): the one designed
+    (``box["L0_mm"]``), where it came from (``origin`` of :func:`_identified_length`, else the
+    surrogate's length), that the force depends on it and how to set it, and the tubes of the
+    box it is short for (below the practical range's L0 >= 3 D0); "" where L0 was given. A
+    design is verified at one length, and its clamped ends take a larger share of a shorter
+    muscle's force (the FE: a 10 x 0.5 mm tube at 6 bar, eps 0.1 pulls 129.4 N 282 mm long,
+    117.5 N 60 mm long)."""
+    if constraints.L0_mm is not None and origin != "identified":
         return ""
+    L0 = float(box["L0_mm"][0])
+    where = ("the identified muscle's length (--calibration)" if origin == "identified" else
+             "the default, the length of the paper's muscle" if L0 == L0_MM else
+             "the length the surrogate's training data held")
+    if origin and origin != "identified":
+        where += f" ({origin})"
+    k = PRACTICAL_RANGE.L0_per_D0_min
+    short = (f"; it is below {k:g} D0 for the tubes wider than {L0 / k:.4g} mm searched, "
+             "outside the practical range, where the ends are much of the muscle"
+             if L0 < k * box["D0_mm"][1] else "")
     return (f"L0 {L0:g} mm assumed, not given: {where}; the force depends on the length "
             "through the clamped ends, a shorter muscle pulling less: --L0 MM designs the "
-            "length to be built, --L0 A:B searches a range of it")
+            f"length to be built, --L0 A:B searches a range of it{short}")
 
 
 def _walls(D0: np.ndarray, t0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -1276,6 +1276,17 @@ def test_the_default_length_is_the_identified_muscles(tmp_path, mkm_run):
     assert found.length_note == ("L0 282 mm assumed, not given: the default, the length of the "
                                  "paper's muscle (the identified muscles are 300 and 250 mm "
                                  f"long); {ENDS}")
+    # a muscle identified 120 mm long: short for the widest tubes searched, said so (beyond
+    # the default surrogate's L0 150:400, the practical range's searches D0 5:60)
+    for run in record["axisym"]["identified"]["runs"]:
+        run["muscle"] = {**muscle, "L0_mm": 120.0}
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    found = search(["100N@2bar,eps=0.1"], calibration=Calibration.load(lab))
+    assert found.box["D0_mm"] == [5.0, 60.0]
+    assert found.length_note == ("L0 120 mm assumed, not given: the identified muscle's length "
+                                 f"(--calibration); {ENDS}; it is below 3 D0 for the tubes "
+                                 "wider than 40 mm searched, outside the practical range, where "
+                                 "the ends are much of the muscle")
     # the shipped calibration records no identified muscle
     assert identified_lengths(None) == []
 
