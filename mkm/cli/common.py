@@ -375,14 +375,17 @@ def emit_prediction(prediction, out: str | None, model=None) -> None:
 FE_KEY = "axisym"
 
 
-def say_defaults(args, model, prediction, given, rubber_flags: str) -> None:
+def say_defaults(args, model, given, rubber_flags: str, prediction=None) -> None:
     """One note on stderr naming the braid angle and rubber ``model`` took where ``given`` (the
     parameter names the user set) lacks them, and where from: each rung has its own calibrated
     angle, so a muscle designed at the FE's and checked with another rung is another braid
     (Equation 2 at its 30.778 deg: 389.8 N for a 19 x 0.5 mm muscle at 6 bar, eps 0.15, that
     the FE and Equation 2 at 32.99 deg put at 301.5 and 301.2 N).
-    ``rubber_flags``: how this command takes a rubber. Nothing where all were given."""
-    said = _defaults_taken(model, prediction.params, set(given), prediction)
+    ``rubber_flags``: how this command takes a rubber; ``prediction``: what ``model`` answered
+    (its parameters, and for auto the models that answered), else ``model.params()``. Nothing
+    where all were given."""
+    params = model.params() if prediction is None else prediction.params
+    said = _defaults_taken(model, params, set(given), prediction)
     if not said:
         return
     flags = ", ".join(["--theta0"] * any("theta0 " in s for s in said)

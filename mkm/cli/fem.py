@@ -212,8 +212,9 @@ def _solve(args) -> int:
 
         print(explain(prediction, label=model_label), file=sys.stderr)
     emit_prediction(_answered(prediction, model), args.out, model)
-    say_defaults(args, model, prediction, dict(spec.params),
-                 f"--model {args.model}{',' if ':' in args.model else ':'}C10_MPa=X,C01_MPa=Y")
+    say_defaults(args, model, dict(spec.params),
+                 f"--model {args.model}{',' if ':' in args.model else ':'}C10_MPa=X,C01_MPa=Y",
+                 prediction)
     outside = _outside_practical_range(prediction, args.D0, args.t0)
     if outside:  # computed all the same (inside LIMITS it is a muscle), but never validated
         say(args, "warning", f"outside the practical range every model is validated over "
@@ -381,6 +382,7 @@ def _dataset(args) -> int:
 
 def _convergence(args) -> int:
     from mkm.fem.fe.convergence import convergence_study
+    from mkm.fem.fe.model import Axisym
 
     frame, png = convergence_study(args.out, D0_mm=args.D0, t0_mm=args.t0, eps=args.eps,
                                    pressure_bar=args.pressure, theta0_deg=args.theta0,
@@ -389,6 +391,11 @@ def _convergence(args) -> int:
     print(frame.drop(columns="failure").to_string(index=False,
                                                   float_format=lambda v: f"{v:.6g}"))
     print(f"wrote {png} and mesh_convergence.csv/.json", file=sys.stderr)
+    # the muscle every level solved (the mesh aside), as mkm fem solve says of its axisym
+    say_defaults(args, Axisym(theta0_deg=args.theta0, L0_mm=args.L0,
+                              calibration=args.calibration),
+                 ["theta0_deg"] * (args.theta0 is not None),
+                 "--calibration of an identified muscle")
     if len(failed):  # a NaN force is no mesh error: said with why
         say(args, "warning", f"mesh {', '.join(failed['mesh'])} did not converge, force_N NaN: "
             f"{failed['failure'].iloc[0]}")

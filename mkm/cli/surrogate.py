@@ -324,9 +324,9 @@ def _predict(args) -> int:
     # answered points kept
     answered = model.answered(prediction)
     emit_prediction(answered, args.out, model)
-    say_defaults(args, model, prediction, [k for k, v in (
+    say_defaults(args, model, [k for k, v in (
         ("theta0_deg", args.theta0), ("C10_MPa", args.C10), ("C01_MPa", args.C01))
-        if v is not None], "--C10, --C01")
+        if v is not None], "--C10, --C01", prediction)
     reasons = [str(r) for r, ok in zip(answered.extras["reason"].ravel(),
                                        prediction.valid.ravel(), strict=True) if not ok]
     locked = sum(r.startswith("past the braid lock") for r in reasons)

@@ -150,8 +150,9 @@ class Search:
     box_origin: dict = field(default_factory=dict)
     #: the radial gap between tube and braid of the muscles as built [mm] (0: none)
     gap_mm: float = 0.0
-    #: where the length searched came from when no L0 was given and ``calibration`` holds an
-    #: identified muscle (:func:`mkm.identify.band.identified_lengths`), else ""
+    #: the length searched when no L0 was given, where it came from (the default, or the
+    #: identified muscle's of ``calibration``: :func:`mkm.identify.band.identified_lengths`) and
+    #: how to set it (:func:`_length_note`), else ""
     length_note: str = ""
 
     @property
@@ -278,7 +279,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if not isinstance(constraints, Constraints):
         constraints = Constraints(**(constraints or {}))
     constraints, rubber_note = _distinct_rubbers(constraints, calibration)
-    constraints, length_note = _identified_length(constraints, calibration)
+    constraints, length_origin = _identified_length(constraints, calibration)
     spec = parse_spec(surrogate)
     if spec.name != "surrogate":
         raise ValueError(f"--surrogate {surrogate!r}: expected a surrogate spec "
@@ -313,6 +314,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
            "t0_mm": constraints.t0_mm or default_box["t0_mm"],
            "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
            "theta0_deg": constraints.theta0_deg or (theta0_default,) * 2}
+    length_note = _length_note(constraints, box, length_origin)
     _check_conflicts(requirements, constraints, box, bool(outside), calibration)
     P_work = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
     families = [(float(L0), float(theta0), rubber) for L0 in _axis(box["L0_mm"])
@@ -444,20 +446,43 @@ def _identified_length(constraints: Constraints, calibration: Calibration | None
                        ) -> tuple[Constraints, str]:
     """``constraints`` with L0 the identified muscle's where none was given and the
     calibration was identified on one length (its braid angle and rubber, the search's
-    defaults, are that muscle's), and the note that says so; with several lengths, the
-    constraints as they are and the note naming them; "" where the calibration records
-    none."""
+    defaults, are that muscle's), and where the length comes from: "identified" then; with
+    several lengths, the constraints as they are and the clause naming them; "" where the
+    calibration records none or L0 was given."""
     from mkm.identify.band import identified_lengths
 
     lengths = [] if constraints.L0_mm is not None else identified_lengths(calibration)
     if len(lengths) == 1:
-        return (replace(constraints, L0_mm=(lengths[0],) * 2),
-                f"L0 {lengths[0]:g} mm, the identified muscle's; --L0 to design another length")
+        return replace(constraints, L0_mm=(lengths[0],) * 2), "identified"
     if lengths:
         *others, last = (f"{v:g}" for v in lengths)
-        return constraints, (f"the identified muscles are {', '.join(others)} and {last} mm "
-                             "long: L0 is the surrogate's; --L0 to design one of those lengths")
+        return constraints, f"the identified muscles are {', '.join(others)} and {last} mm long"
     return constraints, ""
+
+
+def _length_note(constraints: Constraints, box: dict, origin: str) -> str:
+    """The note of a length not given (:attr:`Search.length_note`): the one designed
+    (``box["L0_mm"]``), where it came from (``origin`` of :func:`_identified_length`, else the
+    surrogate's length), that the force depends on it and how to set it, and the tubes of the
+    box it is short for (below the practical range's L0 >= 3 D0); "" where L0 was given. A
+    design is verified at one length, and its clamped ends take a larger share of a shorter
+    muscle's force (the FE: a 10 x 0.5 mm tube at 6 bar, eps 0.1 pulls 129.4 N 282 mm long,
+    117.5 N 60 mm long)."""
+    if constraints.L0_mm is not None and origin != "identified":
+        return ""
+    L0 = float(box["L0_mm"][0])
+    where = ("the identified muscle's length (--calibration)" if origin == "identified" else
+             "the default, the length of the paper's muscle" if L0 == L0_MM else
+             "the length the surrogate's training data held")
+    if origin and origin != "identified":
+        where += f" ({origin})"
+    k = PRACTICAL_RANGE.L0_per_D0_min
+    short = (f"; it is below {k:g} D0 for the tubes wider than {L0 / k:.4g} mm searched, "
+             "outside the practical range, where the ends are much of the muscle"
+             if L0 < k * box["D0_mm"][1] else "")
+    return (f"L0 {L0:g} mm assumed, not given: {where}; the force depends on the length "
+            "through the clamped ends, a shorter muscle pulling less: --L0 MM designs the "
+            f"length to be built, --L0 A:B searches a range of it{short}")
 
 
 def _walls(D0: np.ndarray, t0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

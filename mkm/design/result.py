@@ -120,7 +120,7 @@ class DesignResult:
 
     def notes(self) -> list[str]:
         """What a user must know of the box searched, one line each: the length searched
-        where a calibration's identified muscle gave it (:attr:`Search.length_note`), the box
+        where none was given and where from (:attr:`Search.length_note`), the box
         when it is not the surrogate's (:meth:`Search.box_note`), the chosen design on an end of a
         searched range (:meth:`~mkm.design.box_search.Search.edges`), where a larger box might hold
         a better design, and a searching margin of more than :data:`LARGE_MARGIN_SHARE` of a

@@ -36,6 +36,12 @@ from mkm.html import esc
 from mkm.registry import entry
 
 MESH = "coarse"
+#: what a design's length note says of a length not given (its force through the ends)
+ENDS = ("the force depends on the length through the clamped ends, a shorter muscle pulling "
+        "less: --L0 MM designs the length to be built, --L0 A:B searches a range of it")
+#: the note of a design at the default length
+DEFAULT_LENGTH = (f"L0 282 mm assumed, not given: the default, the length of the paper's muscle; "
+                  f"{ENDS}")
 # every search runs on the default surrogate, trained (GP fitting) on first use in a session
 pytestmark = pytest.mark.slow
 
@@ -606,6 +612,7 @@ def test_a_design_on_the_edge_of_the_search_box_is_named():
     # one line of its own, naming the box searched, the ends the design sits on and the
     # options that widen the box: each end moved out by half its range's span
     assert result.notes() == [
+        DEFAULT_LENGTH,
         "the chosen design sits on the edge of the search box D0 30:50 mm x t0 2:4 mm: "
         f"{', '.join(edges)}; a larger box might hold a better design: widen it, e.g. "
         "--D0 20:50 --t0 1:4"]
@@ -1248,8 +1255,8 @@ def test_the_default_length_is_the_identified_muscles(tmp_path, mkm_run):
                               "--mesh", MESH, "--no-progress", "--calibration", str(lab),
                               "--out", str(tmp_path / "d")])
     assert code == 0, err
-    assert "mkm design: L0 300 mm, the identified muscle's; --L0 to design another length\n" \
-        in err
+    assert (f"mkm design: L0 300 mm assumed, not given: the identified muscle's length "
+            f"(--calibration); {ENDS}\n") in err
     designs = json.loads((tmp_path / "d" / "designs.json").read_text(encoding="utf-8"))
     assert designs["chosen_muscle"]["L0_mm"] == 300.0
     # --L0 given: that length, no such line
@@ -1266,10 +1273,39 @@ def test_the_default_length_is_the_identified_muscles(tmp_path, mkm_run):
     lab.write_text(json.dumps(record), encoding="utf-8")
     found = search(["100N@2bar,eps=0.1"], calibration=Calibration.load(lab))
     assert set(found.candidates["L0_mm"]) == {L0_MM}
-    assert found.length_note == ("the identified muscles are 300 and 250 mm long: L0 is the "
-                                 "surrogate's; --L0 to design one of those lengths")
+    assert found.length_note == ("L0 282 mm assumed, not given: the default, the length of the "
+                                 "paper's muscle (the identified muscles are 300 and 250 mm "
+                                 f"long); {ENDS}")
+    # a muscle identified 120 mm long: short for the widest tubes searched, said so (beyond
+    # the default surrogate's L0 150:400, the practical range's searches D0 5:60)
+    for run in record["axisym"]["identified"]["runs"]:
+        run["muscle"] = {**muscle, "L0_mm": 120.0}
+    lab.write_text(json.dumps(record), encoding="utf-8")
+    found = search(["100N@2bar,eps=0.1"], calibration=Calibration.load(lab))
+    assert found.box["D0_mm"] == [5.0, 60.0]
+    assert found.length_note == ("L0 120 mm assumed, not given: the identified muscle's length "
+                                 f"(--calibration); {ENDS}; it is below 3 D0 for the tubes "
+                                 "wider than 40 mm searched, outside the practical range, where "
+                                 "the ends are much of the muscle")
     # the shipped calibration records no identified muscle
-    assert identified_lengths(None) == [] and search(["100N@2bar,eps=0.1"]).length_note == ""
+    assert identified_lengths(None) == []
+
+
+def test_a_length_not_given_is_said_with_how_to_set_it(tmp_path, mkm_run):
+    """A 10 mm tube for 80 N at 6 bar, eps 0.1 was designed 282 mm long, the paper's muscle's,
+    and neither the summary nor designs.json said so, where the FE pulls 129.4 N at 282 mm and
+    117.5 N at 60 mm (its clamped ends; `mkm fem solve --model axisym --D0 10 --t0 0.5 --eps
+    0.1 --L0 60 --pressures 6`): one note names the length, where from and the flag."""
+    argv = ["design", "--require", "80N@6bar,eps=0.1", "--D0", "10", "--top", "1", "--mesh",
+            MESH, "--no-progress"]
+    code, _, err = mkm_run([*argv, "--out", str(tmp_path / "d")])
+    assert code == 0 and err.splitlines()[1] == f"mkm design: {DEFAULT_LENGTH}"
+    designs = json.loads((tmp_path / "d" / "designs.json").read_text(encoding="utf-8"))
+    assert designs["chosen_muscle"]["L0_mm"] == L0_MM and designs["notes"][0] == DEFAULT_LENGTH
+    # --L0 given, as a value or a range: that length, nothing assumed
+    assert search(["80N@6bar,eps=0.1"], {"D0_mm": 10.0, "L0_mm": 60.0}).length_note == ""
+    assert search(["80N@6bar,eps=0.1"], {"D0_mm": 10.0, "L0_mm": (60.0, 120.0)}
+                  ).length_note == ""
 
 
 def test_a_gap_wider_than_the_narrowest_tubes_radius_is_refused_before_the_search():
