@@ -248,8 +248,8 @@ def test_a_disk_that_writes_slower_than_the_run_acquires_stops_it_vented(tmp_pat
     wait_written = recorder.Recorder.wait_written
 
     # two blocks queued a write, both ways: the loop waits for the disk, and the disk for the
-    # loop, which a loaded machine slowed until the disk kept up, nothing held, and the run
-    # completed (7 of 30 failed so with three CPU hogs). Nets under a broken fix: 60 s
+    # loop, whatever a loaded machine slows (a disk that waited for nothing keeps up with a
+    # slowed loop, holds nothing, and the run completes). Nets under a broken fix: 60 s
     def two_blocks_a_write(self, rows):  # count: blocks queued, blocks written
         with cond:
             cond.wait_for(lambda: 2 * count[1] >= count[0] - 1, 60)
