@@ -243,23 +243,38 @@ def test_a_disk_that_writes_slower_than_the_run_acquires_stops_it_vented(tmp_pat
     from mkm.bench.run import acquire
 
     offset, cond, count = _recorder_clock(monkeypatch), threading.Condition(), [0, 0]
+    ended = threading.Event()
     samples, append = recorder.Recorder.samples, RunWriter.append_samples
+    wait_written = recorder.Recorder.wait_written
 
+    # two blocks queued a write, both ways: the loop waits for the disk, and the disk for the
+    # loop, whatever a loaded machine slows (a disk that waited for nothing keeps up with a
+    # slowed loop, holds nothing, and the run completes). Nets under a broken fix: 60 s
     def two_blocks_a_write(self, rows):  # count: blocks queued, blocks written
-        with cond:  # a net under a broken fix: 60 s
+        with cond:
             cond.wait_for(lambda: 2 * count[1] >= count[0] - 1, 60)
             count[0] += 1
+            cond.notify_all()
         samples(self, rows)
 
     def slow(self, rows):
+        with cond:  # the write of block w once the loop has queued 2w - 1, until the run ends
+            cond.wait_for(lambda: count[0] >= 2 * count[1] + 1 or ended.is_set(), 60)
         offset[0] += 0.2  # the write takes 0.2 s
         append(self, rows)
         with cond:
             count[1] += 1
             cond.notify_all()
 
+    def waited_at_the_end(self, timeout_s=None):  # the run queues no more: the disk goes on
+        with cond:
+            ended.set()
+            cond.notify_all()
+        return wait_written(self, timeout_s)
+
     monkeypatch.setattr(recorder.Recorder, "samples", two_blocks_a_write)
     monkeypatch.setattr(RunWriter, "append_samples", slow)
+    monkeypatch.setattr(recorder.Recorder, "wait_written", waited_at_the_end)
     result = acquire(load_config(), out_root=tmp_path, notify=lambda m: None)
     assert (result.status, result.exit_code) == ("failed", 2), result.reason
     assert re.match(r"disk not taking the record: slower than the run, \d+ samples \([\d.]+ "
