@@ -435,15 +435,18 @@ def test_convergence_says_the_angle_and_rubber_it_took(mkm_run, tmp_path):
     """The mesh study solved the FE's calibrated angle and Silastic S unsaid, where mkm fem solve
     names them: the same note, through the same helper (eps 0.5, past the lock, solves fast)."""
     argv = ["fem", "convergence", "--eps", "0.5", "--out", str(tmp_path)]
+    def defaults(err):  # a library's deprecation warning may be said beside it
+        return [line for line in err.splitlines() if "note: not given: " in line]
+
     code, _, err = mkm_run(argv)
-    assert code == 0 and err.splitlines()[1] == (
+    assert code == 0 and defaults(err) == [
         "mkm fem convergence: note: not given: theta0 32.992 deg, axisym's own calibrated angle "
         f"(axisym in the shipped fem/calibration.json); {SILASTIC_S} (--theta0, --calibration "
-        "of an identified muscle to give the muscle's own)")
+        "of an identified muscle to give the muscle's own)"]
     code, _, err = mkm_run([*argv, "--theta0", "30"])
-    assert code == 0 and err.splitlines()[1] == (
+    assert code == 0 and defaults(err) == [
         f"mkm fem convergence: note: not given: {SILASTIC_S} (--calibration of an identified "
-        "muscle to give the muscle's own)")
+        "muscle to give the muscle's own)"]
 
 
 def test_convergence_below_the_threshold_says_why_there_is_no_force_change(mkm_run, tmp_path):
