@@ -105,7 +105,7 @@ def oversized_warning(config) -> str | None:
     low_N = expected_force_N(config, top, True, 0.0) / config.safety.force_limit_fraction
     high_N = largest_N / MIN_FORCE_LIMIT_FRACTION
     low_bar, force_N = lowest_step(config)
-    step_N = backends.entry(config.daq.backend).capabilities.ai_lsb_V * cell.sensitivity_N_per_V
+    step_N = adc_step_N(config)
     linearity_N = cell.nonlinearity_fraction_fs * cell.capacity_N
     return (f"the muscle develops at most about {largest_N:.3g} N at {top:g} bar (Equation 2 on "
             f"the braid's diameter at eps 0), {100 * largest_N / cell.capacity_N:.2g} % of "
@@ -117,6 +117,12 @@ def oversized_warning(config) -> str | None:
             f"{percent(linearity_N / force_N)} %; a cell of {low_N:.3g} to {high_N:.3g} N "
             f"capacity ({low_N / G_N_PER_KG:.2g} to {high_N / G_N_PER_KG:.2g} kg) suits this "
             "muscle")
+
+
+def adc_step_N(config) -> float:
+    """One ADC step of the configured backend's input through the load cell [N]."""
+    return (backends.entry(config.daq.backend).capabilities.ai_lsb_V
+            * config.loadcell.sensitivity_N_per_V)
 
 
 #: Standard gravity [N/kg]: load cells are sold by the mass they weigh
@@ -164,15 +170,15 @@ def limits_warning(config) -> str | None:
     low_bar, force_N = lowest_step(config)
     if force_N <= 0:
         return None
-    loose = [(name, allowed, what) for name, allowed, what in FORCE_LIMITS
-             if _limit(config, name, allowed)[1] > LIMIT_SHARE * force_N]
+    loose = [(name, allowed, what, *_limit(config, name, allowed))
+             for name, allowed, what in FORCE_LIMITS]
+    loose = [limit for limit in loose if limit[-1] > LIMIT_SHARE * force_N]
     if not loose:
         return None
     packaged = load_config()
     packaged_bar, packaged_N = lowest_step(packaged)
     said, to_set = [], []
-    for name, allowed, what in loose:
-        value, allowed_N = _limit(config, name, allowed)
+    for name, allowed, what, value, allowed_N in loose:
         share = _limit(packaged, name, allowed)[1] / packaged_N
         passes = "" if said else "passes "
         said.append(f"{name}={value:g} {passes}{percent(allowed_N / force_N)} % "

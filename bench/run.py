@@ -917,9 +917,7 @@ class BenchRun:
         forces, tare = acq.forces_around_vent(), self.recorder.meta.tare \
             if self.recorder is not None else None
         if forces is not None and tare and before is not None:
-            cell = self.config.loadcell
-            step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
-                * cell.sensitivity_N_per_V
+            step_N = acq.step_N
             tare_std_N = float(tare["std_N"])
             noise_N = ZERO_NOISE_SIGMAS * tare_std_N + 2 * step_N
             # a cell that strayed more than an ADC step at the tare, or held its code while the

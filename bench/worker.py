@@ -52,7 +52,7 @@ from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
-from mkm.bench.preflight import FRICTION_FRACTION, force_bounds_N
+from mkm.bench.preflight import FRICTION_FRACTION, adc_step_N, force_bounds_N
 from mkm.bench.recorder import Recorder
 from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
@@ -126,6 +126,7 @@ class Acquisition:
         self.observers = list(observers)
         self.rate_hz = config.daq.sample_rate_hz
         self.cell = config.loadcell
+        self.step_N = adc_step_N(config)  # one ADC step of the load cell's input [N]
         self.electronic = config.regulator.electronic
         self.tare_offset_V = config.loadcell.offset_V
         # the load cell's spread at the tare [V] (0 before it): above one ADC step, a reading
@@ -470,8 +471,7 @@ class Acquisition:
         pressure_bar, least_N, most_N = self._bounds()
         rise_N = (float(np.interp(high_bar, pressure_bar, least_N))
                   - float(np.interp(low_bar, pressure_bar, most_N)))
-        step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
-            * self.cell.sensitivity_N_per_V
+        step_N = self.step_N
         held_N = force - (ZERO_NOISE_SIGMAS * self.tare_std_V * self.cell.sensitivity_N_per_V
                           + 2 * step_N
                           + self.cell.zero_drift_fraction_fs * self.cell.capacity_N)
@@ -731,8 +731,7 @@ class Acquisition:
         if self._same_cell is None or self._pressure_from_s is None:
             return ""
         same, since_s = self._same_cell
-        step_N = backends.entry(self.config.daq.backend).capabilities.ai_lsb_V \
-            * self.cell.sensitivity_N_per_V
+        step_N = self.step_N
         blind = "its forces measure nothing, and the force limit was blind"
         if since_s <= self._pressure_from_s:
             if not self.highest_bar > below:
