@@ -347,8 +347,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     coarse = pd.concat([evaluate(family, D0, t0) for family in models], ignore_index=True)
     coarse = _rank(coarse, objective)
     seeds = _seeds(coarse) if refine else coarse.iloc[:0]
-    dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
-    dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
+    dD0, dt0 = _spacing(D0c), _spacing(t0c)
     fine = [_fine(evaluate, _family(seed), seed, dD0, dt0, box)
             for _, seed in seeds.iterrows()]
     cand = _refine_axes(_merge([coarse, *fine], objective), evaluate, model_at, box, D0c, t0c,
@@ -360,6 +359,11 @@ def search(requirements, constraints: Constraints | dict | None = None,
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
+
+
+def _spacing(axis: np.ndarray) -> float:
+    """The step of an evenly spaced grid axis; 0 for a single value."""
+    return float(axis[1] - axis[0]) if axis.size > 1 else 0.0
 
 
 def _family(row) -> tuple[float, float, str]:
@@ -397,8 +401,7 @@ def _refine_axes(cand: pd.DataFrame, evaluate, model_at, box: dict, D0c: np.ndar
     family not yet searched."""
     axes = [k for k in AXIS_RESOLUTION if box[k][1] > box[k][0]]
     step = {k: (box[k][1] - box[k][0]) / (AXIS_VALUES - 1) for k in axes}
-    dD0 = D0c[1] - D0c[0] if D0c.size > 1 else 0.0
-    dt0 = t0c[1] - t0c[0] if t0c.size > 1 else 0.0
+    dD0, dt0 = _spacing(D0c), _spacing(t0c)
     reach = (AXIS_NEIGHBOURHOOD_CELLS if fine else FE_AXIS_NEIGHBOURHOOD_CELLS) + 1e-6
     while any(step[k] > AXIS_RESOLUTION[k] for k in axes):
         step = {k: v / 2 for k, v in step.items()}
