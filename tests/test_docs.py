@@ -1800,7 +1800,7 @@ def test_the_guides_range_surrogate_rescale_is_the_shipped_models():
     set it is fitted on) and the power of its std's calibration: held to the shipped model's
     metadata and to that set (a recalibration's figures no file records are not given)."""
     from mkm.surrogate import kinds
-    from mkm.surrogate.train import cached_model
+    from mkm.surrogate.train import cached_model, kind_files
     from mkm.surrogate.training_data import load_training_data
     from mkm.surrogate.validation import std_coverage
 
@@ -1816,7 +1816,12 @@ def test_the_guides_range_surrogate_rescale_is_the_shipped_models():
     assert (f"fitted on the {rescale['n_muscles']} held-out muscles: k {k:.2f}, p {p:.2f}, q "
             f"{q:.1f} (the std {(15 / 30) ** q:.1f} times wider at 15 deg than at 30, "
             f"{(40 / 30) ** q:.2f} times at 40)") in text
-    data = load_training_data(ROOT / rescale["path"])
+    # the recorded path names the set as seen from where the model was trained; the file is
+    # the kind's shipped set, which its sha256 identifies
+    holdout = kind_files(kinds.RANGE)[2]
+    assert Path(rescale["path"]).name == holdout.name
+    data = load_training_data(holdout)
+    assert data.sha256 == rescale["sha256"]
     within = std_coverage(model.estimator, data.X, data.y)
     cover = " / ".join(f"{100 * within[f'within_{n}std']:.1f}" for n in (1, 2, 3))
     assert (f"| `{Path(rescale['path']).name}` | {data.n_muscles} |" in text
