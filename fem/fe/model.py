@@ -64,10 +64,15 @@ from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_ki
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
 # away from the axis add an error far below the mesh's
 INTORDER = 4
-#: Halvings of a free-path step before the threshold search gives up: from span/5, 12 reach
-#: span/2e4. Near the braid lock the fine mesh's small cap elements need 7 (a mesh graded 32:1
-#: needs 9); the former 6 made the fine mesh "invert at the lock", an artefact.
-FREE_PATH_CUTBACKS = 12
+#: Halvings of a load step (free path and pressure ramp) before the solve gives up: from span/5,
+#: 12 reach span/2e4. Near the braid lock the fine mesh's small cap elements need 7 on the free
+#: path (a mesh graded 32:1 needs 9). Just above P* the held muscle of a thin soft tube at a low
+#: braid angle is soft against barrelling (the middle swells, the ends neck: D0 60 mm, t0 0.5 mm,
+#: theta0 15 deg, C10 0.03 MPa, L0 180 mm, eps 0.0239: du_r/dP 1350 mm/bar at the mid-plane)
+#: and stiffens within a hundredth of a bar (2.8 mm in all), so Newton's first iterate of a
+#: ramp step from P* is that slope times the step and inverts the wall's elements above
+#: 0.005 bar: the 0:8:0.5 sweep needs 7 halvings, the 8 bar point alone 9.
+MAX_CUTBACKS = 12
 #: A pressure step of the held ramp is converged once the correction still to come, as the
 #: factorisation at hand estimates it, would change the cap force by less than this fraction of
 #: the force (or of the cap force at 1 bar, near the threshold). The chord iterations' estimate
@@ -430,7 +435,7 @@ class HalfMuscle:
         braid lock) or lands off the inflated branch (a pressure <= 0 or a braid slack
         everywhere: full Newton from a far start can jump there) the path is followed by cap
         displacement from the thick-wall solution at a fifth of the shortening (or from rest
-        where there is none), with up to :data:`FREE_PATH_CUTBACKS` halvings (the small cap
+        where there is none), with up to :data:`MAX_CUTBACKS` halvings (the small cap
         elements of a fine mesh need short steps near the lock). Returns the state, the
         pressure [MPa] and the report (iterations of all attempts). With a gap, ``U_mm = 0``
         too (the threshold at rest length): there is no path to follow, and a failed solve
@@ -476,7 +481,7 @@ class HalfMuscle:
         # full Newton on this path near the lock: chord iterations there would spend their
         # iterations where Newton finds the inversion that names the reason at once
         [(x, report)] = load_path(free, x0, U_start, [U_mm], check=check,
-                                  max_cutbacks=FREE_PATH_CUTBACKS,
+                                  max_cutbacks=MAX_CUTBACKS,
                                   label=lambda U: f"cap displacement {U:.3g} mm",
                                   factorize=self._free_lu, **self._newton_options())
         report.iterations += spent
@@ -560,6 +565,7 @@ class HalfMuscle:
     def held_path(self, y, P_start_MPa: float, pressures_MPa):
         """Pressure ramp with the cap held where ``y`` has it, from the state ``y`` at
         ``P_start_MPa`` through the sorted ``pressures_MPa``: a list of (state or None, report).
+        A step that fails is halved, up to :data:`MAX_CUTBACKS` times.
         """
         U = y[-1]
         last = {}
@@ -591,7 +597,7 @@ class HalfMuscle:
                          check=lambda x, P: self.inverted(np.append(x, U)),
                          label=lambda P: f"{P / BAR_TO_MPA:.4g} bar", factorize=self._held_lu,
                          accept=force_converged, residual=held_residual,
-                         **self._newton_options())
+                         max_cutbacks=MAX_CUTBACKS, **self._newton_options())
         return [(None if x is None else np.append(x, U), report) for x, report in path]
 
     def cavity_volume(self, y) -> float:
