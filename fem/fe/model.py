@@ -88,6 +88,10 @@ FORCE_RTOL = 1e-10
 #: deg short, one at 26 deg with a rate, from steps cut back 12 times, that reached the lock by
 #: eps 0.148 where the closed form's lock is at 0.40.
 LOCK_NEAR_DEG = 2.5
+#: A converged state whose bonded fibres are stretched by more than this between the nodes,
+#: in the muscle's middle, is the mesh's zig-zag (:meth:`HalfMuscle.zig_zag_strain`): resolved
+#: states stay below 1e-4, the zig-zags measured were 1.3e-3 to 0.075
+ZIG_ZAG_STRAIN = 1e-3
 
 
 class HalfMuscle:
@@ -162,6 +166,9 @@ class HalfMuscle:
         Bl[..., 0, 3], Bl[..., 1, 3] = shape_a, 1.0 - shape_a
         lam_dofs = nu + npr + (np.searchsorted(tension_nodes, m.facets[:, ob.find])
                                if sleeve == "bonded" else np.zeros((2, ob.find.size), int))
+        # the braid's quadrature points more than two outer diameters from the cap: the
+        # muscle's middle, where a converged bonded braid keeps its length (zig_zag_strain)
+        self._braid_middle = Z < self.H - 4.0 * self.Ro
         braid_term = (np.concatenate([Bb, Bl], axis=2), np.zeros(4),
                       np.vstack([ob.element_dofs, lam_dofs]), 2 * np.pi * self.Ro * ob.dx)
 
@@ -377,6 +384,36 @@ class HalfMuscle:
         if lam.size and lam.min() < -1e-6 * max(np.abs(lam).max(), 1e-12):
             return f"fibre compression (braid tension {lam.min():.3g} N/mm < 0)"
         return ""
+
+    def zig_zag_strain(self, y) -> float:
+        """Largest fibre strain ``l_f - 1`` of a bonded braid in the muscle's middle (more than
+        two outer diameters from the cap), between the nodes where its length is enforced; 0
+        without a bonded braid or a middle.
+
+        The tension per outer node holds the weighted mean of ``l_f^2 - 1`` around the node to
+        zero, not its value at every point: on a mesh too coarse along a slender thin wall the
+        wall can zig-zag from node to node with its fibres stretched between the nodes and
+        shortened at them, a mode of the mesh, not of the muscle. Resolved states keep it below
+        1e-4 (muscle I's threshold on every mesh 5e-7, the fine mesh's D0 5 mm, t0 0.5 mm,
+        L0 1000 mm muscle at theta0 40 deg, eps 0.0145, 7e-5); the medium mesh's zig-zag of that
+        muscle at its threshold reaches 0.075.
+        """
+        if self.braid is None or self.sleeve != "bonded" or not self._braid_middle.any():
+            return 0.0
+        g, _, _ = self._constraint(self.braid.values(y)[..., :3], self.theta0_deg, self.Ro)
+        return max(float(np.max(g[self._braid_middle])) / 2.0, 0.0)
+
+    def mesh_mode(self, y) -> str:
+        """Why ``y`` is the mesh's zig-zag rather than the muscle's state (empty if it is not):
+        its fibres stretched by more than :data:`ZIG_ZAG_STRAIN` between the nodes."""
+        strain = self.zig_zag_strain(y)
+        if strain <= ZIG_ZAG_STRAIN:
+            return ""
+        longest = float(np.max(np.diff(np.unique(self._dof_RZ[1]))) * 2.0)  # P2: mid-side nodes
+        return (f"the wall zig-zags from node to node, its inextensible fibres stretched by "
+                f"{100 * strain:.2g} % between the nodes, on elements up to "
+                f"{longest / (2.0 * self.Ro):.2g} outer diameters long: a mode of the mesh, too "
+                "coarse along this slender thin wall (mesh=fine resolves it)")
 
     def _newton_options(self):
         cap_force_scale = 0.1 * np.pi * self.Ro**2  # cap force at 1 bar [N]
@@ -745,13 +782,26 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
             failure = report.reason
             force = np.nan
             if yy is not None:
-                failure = half.compression(yy)
                 force = half.cap_force(yy, levels[i] * BAR_TO_MPA)
+                failure = half.compression(yy) or _pushing(half, yy, force, levels[i])
                 out["min_tension_N_per_mm"][i] = half.tension(yy).min()
+            elif report.reached and (mode := half.mesh_mode(np.append(report.reached[-1][1],
+                                                                      y[-1]))):
+                failure = f"{failure} ({mode})"
             out["converged"][i] = not failure
             out["force_N"][i] = np.nan if failure else force
             out["failure"][i] = failure
     return _per_point(out, levels, P_bar, threshold_MPa / BAR_TO_MPA, half.n)
+
+
+def _pushing(half: HalfMuscle, y, force_N: float, pressure_bar: float) -> str:
+    """Why a held state above P* is not the muscle's (empty if it is): a force below zero by
+    more than the solver's error (1e-6 of the cap force at 1 bar; a muscle held above its
+    threshold pulls), said with the mesh's zig-zag where that is the cause."""
+    if force_N >= -1e-6 * 0.1 * np.pi * half.Ro**2:
+        return ""
+    why = half.mesh_mode(y) or "no state of a muscle held above its threshold pushes its cap"
+    return f"negative force ({force_N:.3g} N at {pressure_bar:.4g} bar): {why}"
 
 
 def _per_point(out, levels, P_bar, threshold_bar, dofs):
