@@ -539,6 +539,9 @@ class HalfMuscle:
             elif lock := self._locks_before(report.reached, U_mm):
                 report.reason = f"{lock} (the path stopped with: {report.reason})"
                 report.limit = BRAID_LOCKS
+            elif report.reached and (mode := self.mesh_mode(
+                    np.append(report.reached[-1][1][:-1], report.reached[-1][0]))):
+                report.reason = f"{report.reason} ({mode})"
             return None, np.nan, report
         return np.append(x[:-1], U_mm), float(x[-1]), report
 

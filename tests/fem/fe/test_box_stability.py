@@ -242,3 +242,19 @@ def test_the_fine_mesh_resolves_the_slender_thin_wall():
     out = isometric_sweep([0.2269, 0.23, 0.5], mesh="fine", **SLENDER)
     assert out["converged"].all(), out["failure"]
     assert out["force_N"][0] == 0.0 and 0.0 < out["force_N"][1] < out["force_N"][2]
+
+
+def test_a_threshold_search_that_stalls_on_the_zig_zag_says_so():
+    # muscle 0 of a draw near the slender corner (draw_muscles(20, 2026120704) from D0 5-6 mm,
+    # t0 0.5-0.7 mm, L0 800-1000 mm, eps up to 0.1 of the lock; its record's numbers): the
+    # coarse mesh's free path stalls at a third of eps with its wall zig-zagging (fibres 0.6 %
+    # long between the nodes, elements 9.3 outer diameters); the medium and fine meshes solve it
+    rubber = MooneyRivlin(0.317501, 0.012141, source="a muscle drawn near the slender corner")
+    out = isometric_sweep([1.0], 5.434522, 0.616841, 0.002652, 28.315829, 856.668683,
+                          mesh="coarse", material=rubber)
+    assert not out["converged"][0] and out["limit"][0] == ""
+    assert re.match(r"threshold search failed: Newton did not converge in 20 iterations at cap "
+                    r"displacement -0\.445 mm after 12 cut-backs \(the wall zig-zags from node to "
+                    r"node, its inextensible fibres stretched by 0\.6 % between the nodes, on "
+                    r"elements up to 9\.3 outer diameters long: .*\(mesh=fine resolves it\)\)$",
+                    out["failure"][0]), out["failure"][0]
