@@ -415,9 +415,13 @@ class HalfMuscle:
                 f"{longest / (2.0 * self.Ro):.2g} outer diameters long: a mode of the mesh, too "
                 "coarse along this slender thin wall (mesh=fine resolves it)")
 
+    @property
+    def force_scale_N(self) -> float:
+        """The pressure's force on the cap at 1 bar [N]: the scale of the forces' tolerances."""
+        return 0.1 * np.pi * self.Ro**2
+
     def _newton_options(self):
-        cap_force_scale = 0.1 * np.pi * self.Ro**2  # cap force at 1 bar [N]
-        return {"residual_floor": 1e-10 * cap_force_scale}
+        return {"residual_floor": 1e-10 * self.force_scale_N}
 
     def thick_wall_start(self, U_mm: float):
         """A start for the free muscle at cap displacement ``U_mm``: ``(x, pressure_MPa)`` or
@@ -609,7 +613,6 @@ class HalfMuscle:
         """
         U = y[-1]
         last = {}
-        force_scale = 0.1 * np.pi * self.Ro**2  # cap force at 1 bar [N]
 
         def held(x, P):  # K's leading block is the held tangent: self._held_lu reads only it
             r, K, _ = self.assemble(np.append(x, U), P)
@@ -631,7 +634,7 @@ class HalfMuscle:
             columns, values = K.indices[lo:hi], K.data[lo:hi]
             inner = columns < self.n - 1
             change = values[inner] @ step[columns[inner]]
-            return abs(change) <= FORCE_RTOL * max(abs(last["force"]), force_scale)
+            return abs(change) <= FORCE_RTOL * max(abs(last["force"]), self.force_scale_N)
 
         path = load_path(held, y[:-1], P_start_MPa, pressures_MPa,
                          check=lambda x, P: self.inverted(np.append(x, U)),
@@ -801,7 +804,7 @@ def _pushing(half: HalfMuscle, y, force_N: float, pressure_bar: float) -> str:
     """Why a held state above P* is not the muscle's (empty if it is): a force below zero by
     more than the solver's error (1e-6 of the cap force at 1 bar; a muscle held above its
     threshold pulls), said with the mesh's zig-zag where that is the cause."""
-    if force_N >= -1e-6 * 0.1 * np.pi * half.Ro**2:
+    if force_N >= -1e-6 * half.force_scale_N:
         return ""
     why = half.mesh_mode(y) or "no state of a muscle held above its threshold pushes its cap"
     return f"negative force ({force_N:.3g} N at {pressure_bar:.4g} bar): {why}"
