@@ -64,10 +64,15 @@ from mkm.fem.thickwall import klute_hannaford_threshold_pressure, mid_section_ki
 # 6 points per triangle: exact for P2 x P2 products; the smooth R and 1/R factors of a wall
 # away from the axis add an error far below the mesh's
 INTORDER = 4
-#: Halvings of a free-path step before the threshold search gives up: from span/5, 12 reach
-#: span/2e4. Near the braid lock the fine mesh's small cap elements need 7 (a mesh graded 32:1
-#: needs 9); the former 6 made the fine mesh "invert at the lock", an artefact.
-FREE_PATH_CUTBACKS = 12
+#: Halvings of a load step (free path and pressure ramp) before the solve gives up: from span/5,
+#: 12 reach span/2e4. Near the braid lock the fine mesh's small cap elements need 7 on the free
+#: path (a mesh graded 32:1 needs 9). Just above P* the held muscle of a thin soft tube at a low
+#: braid angle is soft against barrelling (the middle swells, the ends neck: D0 60 mm, t0 0.5 mm,
+#: theta0 15 deg, C10 0.03 MPa, L0 180 mm, eps 0.0239: du_r/dP 1350 mm/bar at the mid-plane)
+#: and stiffens within a hundredth of a bar (2.8 mm in all), so Newton's first iterate of a
+#: ramp step from P* is that slope times the step and inverts the wall's elements above
+#: 0.005 bar: the 0:8:0.5 sweep needs 7 halvings, the 8 bar point alone 9.
+MAX_CUTBACKS = 12
 #: A pressure step of the held ramp is converged once the correction still to come, as the
 #: factorisation at hand estimates it, would change the cap force by less than this fraction of
 #: the force (or of the cap force at 1 bar, near the threshold). The chord iterations' estimate
@@ -83,6 +88,10 @@ FORCE_RTOL = 1e-10
 #: deg short, one at 26 deg with a rate, from steps cut back 12 times, that reached the lock by
 #: eps 0.148 where the closed form's lock is at 0.40.
 LOCK_NEAR_DEG = 2.5
+#: A converged state whose bonded fibres are stretched by more than this between the nodes,
+#: in the muscle's middle, is the mesh's zig-zag (:meth:`HalfMuscle.zig_zag_strain`): resolved
+#: states stay below 1e-4, the zig-zags measured were 1.3e-3 to 0.075
+ZIG_ZAG_STRAIN = 1e-3
 
 
 class HalfMuscle:
@@ -157,6 +166,9 @@ class HalfMuscle:
         Bl[..., 0, 3], Bl[..., 1, 3] = shape_a, 1.0 - shape_a
         lam_dofs = nu + npr + (np.searchsorted(tension_nodes, m.facets[:, ob.find])
                                if sleeve == "bonded" else np.zeros((2, ob.find.size), int))
+        # the braid's quadrature points more than two outer diameters from the cap: the
+        # muscle's middle, where a converged bonded braid keeps its length (zig_zag_strain)
+        self._braid_middle = Z < self.H - 4.0 * self.Ro
         braid_term = (np.concatenate([Bb, Bl], axis=2), np.zeros(4),
                       np.vstack([ob.element_dofs, lam_dofs]), 2 * np.pi * self.Ro * ob.dx)
 
@@ -373,9 +385,43 @@ class HalfMuscle:
             return f"fibre compression (braid tension {lam.min():.3g} N/mm < 0)"
         return ""
 
+    def zig_zag_strain(self, y) -> float:
+        """Largest fibre strain ``l_f - 1`` of a bonded braid in the muscle's middle (more than
+        two outer diameters from the cap), between the nodes where its length is enforced; 0
+        without a bonded braid or a middle.
+
+        The tension per outer node holds the weighted mean of ``l_f^2 - 1`` around the node to
+        zero, not its value at every point: on a mesh too coarse along a slender thin wall the
+        wall can zig-zag from node to node with its fibres stretched between the nodes and
+        shortened at them, a mode of the mesh, not of the muscle. Resolved states keep it below
+        1e-4 (muscle I's threshold on every mesh 5e-7, the fine mesh's D0 5 mm, t0 0.5 mm,
+        L0 1000 mm muscle at theta0 40 deg, eps 0.0145, 7e-5); the medium mesh's zig-zag of that
+        muscle at its threshold reaches 0.075.
+        """
+        if self.braid is None or self.sleeve != "bonded" or not self._braid_middle.any():
+            return 0.0
+        g, _, _ = self._constraint(self.braid.values(y)[..., :3], self.theta0_deg, self.Ro)
+        return max(float(np.max(g[self._braid_middle])) / 2.0, 0.0)
+
+    def mesh_mode(self, y) -> str:
+        """Why ``y`` is the mesh's zig-zag rather than the muscle's state (empty if it is not):
+        its fibres stretched by more than :data:`ZIG_ZAG_STRAIN` between the nodes."""
+        strain = self.zig_zag_strain(y)
+        if strain <= ZIG_ZAG_STRAIN:
+            return ""
+        longest = float(np.max(np.diff(np.unique(self._dof_RZ[1]))) * 2.0)  # P2: mid-side nodes
+        return (f"the wall zig-zags from node to node, its inextensible fibres stretched by "
+                f"{100 * strain:.2g} % between the nodes, on elements up to "
+                f"{longest / (2.0 * self.Ro):.2g} outer diameters long: a mode of the mesh, too "
+                "coarse along this slender thin wall (mesh=fine resolves it)")
+
+    @property
+    def force_scale_N(self) -> float:
+        """The pressure's force on the cap at 1 bar [N]: the scale of the forces' tolerances."""
+        return 0.1 * np.pi * self.Ro**2
+
     def _newton_options(self):
-        cap_force_scale = 0.1 * np.pi * self.Ro**2  # cap force at 1 bar [N]
-        return {"residual_floor": 1e-10 * cap_force_scale}
+        return {"residual_floor": 1e-10 * self.force_scale_N}
 
     def thick_wall_start(self, U_mm: float):
         """A start for the free muscle at cap displacement ``U_mm``: ``(x, pressure_MPa)`` or
@@ -430,7 +476,7 @@ class HalfMuscle:
         braid lock) or lands off the inflated branch (a pressure <= 0 or a braid slack
         everywhere: full Newton from a far start can jump there) the path is followed by cap
         displacement from the thick-wall solution at a fifth of the shortening (or from rest
-        where there is none), with up to :data:`FREE_PATH_CUTBACKS` halvings (the small cap
+        where there is none), with up to :data:`MAX_CUTBACKS` halvings (the small cap
         elements of a fine mesh need short steps near the lock). Returns the state, the
         pressure [MPa] and the report (iterations of all attempts). With a gap, ``U_mm = 0``
         too (the threshold at rest length): there is no path to follow, and a failed solve
@@ -476,7 +522,7 @@ class HalfMuscle:
         # full Newton on this path near the lock: chord iterations there would spend their
         # iterations where Newton finds the inversion that names the reason at once
         [(x, report)] = load_path(free, x0, U_start, [U_mm], check=check,
-                                  max_cutbacks=FREE_PATH_CUTBACKS,
+                                  max_cutbacks=MAX_CUTBACKS,
                                   label=lambda U: f"cap displacement {U:.3g} mm",
                                   factorize=self._free_lu, **self._newton_options())
         report.iterations += spent
@@ -497,6 +543,9 @@ class HalfMuscle:
             elif lock := self._locks_before(report.reached, U_mm):
                 report.reason = f"{lock} (the path stopped with: {report.reason})"
                 report.limit = BRAID_LOCKS
+            elif report.reached and (mode := self.mesh_mode(
+                    np.append(report.reached[-1][1][:-1], report.reached[-1][0]))):
+                report.reason = f"{report.reason} ({mode})"
             return None, np.nan, report
         return np.append(x[:-1], U_mm), float(x[-1]), report
 
@@ -560,10 +609,10 @@ class HalfMuscle:
     def held_path(self, y, P_start_MPa: float, pressures_MPa):
         """Pressure ramp with the cap held where ``y`` has it, from the state ``y`` at
         ``P_start_MPa`` through the sorted ``pressures_MPa``: a list of (state or None, report).
+        A step that fails is halved, up to :data:`MAX_CUTBACKS` times.
         """
         U = y[-1]
         last = {}
-        force_scale = 0.1 * np.pi * self.Ro**2  # cap force at 1 bar [N]
 
         def held(x, P):  # K's leading block is the held tangent: self._held_lu reads only it
             r, K, _ = self.assemble(np.append(x, U), P)
@@ -585,13 +634,13 @@ class HalfMuscle:
             columns, values = K.indices[lo:hi], K.data[lo:hi]
             inner = columns < self.n - 1
             change = values[inner] @ step[columns[inner]]
-            return abs(change) <= FORCE_RTOL * max(abs(last["force"]), force_scale)
+            return abs(change) <= FORCE_RTOL * max(abs(last["force"]), self.force_scale_N)
 
         path = load_path(held, y[:-1], P_start_MPa, pressures_MPa,
                          check=lambda x, P: self.inverted(np.append(x, U)),
                          label=lambda P: f"{P / BAR_TO_MPA:.4g} bar", factorize=self._held_lu,
                          accept=force_converged, residual=held_residual,
-                         **self._newton_options())
+                         max_cutbacks=MAX_CUTBACKS, **self._newton_options())
         return [(None if x is None else np.append(x, U), report) for x, report in path]
 
     def cavity_volume(self, y) -> float:
@@ -739,13 +788,26 @@ def isometric_sweep(pressure_bar, D0_mm: float, t0_mm: float, eps: float, theta0
             failure = report.reason
             force = np.nan
             if yy is not None:
-                failure = half.compression(yy)
                 force = half.cap_force(yy, levels[i] * BAR_TO_MPA)
+                failure = half.compression(yy) or _pushing(half, yy, force, levels[i])
                 out["min_tension_N_per_mm"][i] = half.tension(yy).min()
+            elif report.reached and (mode := half.mesh_mode(np.append(report.reached[-1][1],
+                                                                      y[-1]))):
+                failure = f"{failure} ({mode})"
             out["converged"][i] = not failure
             out["force_N"][i] = np.nan if failure else force
             out["failure"][i] = failure
     return _per_point(out, levels, P_bar, threshold_MPa / BAR_TO_MPA, half.n)
+
+
+def _pushing(half: HalfMuscle, y, force_N: float, pressure_bar: float) -> str:
+    """Why a held state above P* is not the muscle's (empty if it is): a force below zero by
+    more than the solver's error (1e-6 of the cap force at 1 bar; a muscle held above its
+    threshold pulls), said with the mesh's zig-zag where that is the cause."""
+    if force_N >= -1e-6 * half.force_scale_N:
+        return ""
+    why = half.mesh_mode(y) or "no state of a muscle held above its threshold pushes its cap"
+    return f"negative force ({force_N:.3g} N at {pressure_bar:.4g} bar): {why}"
 
 
 def _per_point(out, levels, P_bar, threshold_bar, dofs):
