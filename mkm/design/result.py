@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -46,6 +47,7 @@ from mkm.design.spec import (
     DEFAULT_TOP,
     NEAR_LOCK_FRACTION,
     Constraints,
+    Hints,
     design_muscle,
     load_spec,
     parse_requirement,
@@ -153,7 +155,7 @@ class DesignResult:
                       if k in BOX_NAMES and v[1] > v[0]}
             notes.append(f"the chosen design sits on the edge of the search box "
                          f"{box_text(ranges)}: {', '.join(edges)}; "
-                         + larger_box(best, s.constraints, s.calibration))
+                         + larger_box(best, s.constraints, s.calibration, hints=s.hints))
         if best is not None and (limits := range_limits(best, s.constraints)):
             beyond = any(", beyond its " in limit for limit in limits)
             notes.append(f"the chosen design sits on the practical range's limit"
@@ -164,7 +166,8 @@ class DesignResult:
             notes.append(f"no verified design holds every requirement with the "
                          f"{100 * self.probability:g} % asked (the chosen one: "
                          f"{100 * best['probability_all']:.1f} % of the Monte Carlo draws): "
-                         "verify more designs (--top) or ask for a wider margin")
+                         f"verify more designs ({s.hints.name('top')}) or ask for a wider "
+                         "margin")
         unsolved = [] if best is None else [
             flag.split(":")[0] for flag in str(best["flags"]).split(";")
             if flag.endswith(f":{WORST_CORNER_UNSOLVED}")]
@@ -247,10 +250,15 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         parse_requirement(r) if isinstance(r, str) else r for r in requirements]
     merged = dict(base["constraints"])
     if isinstance(constraints, Constraints):
-        merged.update({k: v for k, v in asdict(constraints).items()
-                       if v is not None and not (k == "rubber" and v == (DEFAULT_RUBBER,))})
+        flagged = {k: v for k, v in asdict(constraints).items()
+                   if v is not None and not (k == "rubber" and v == (DEFAULT_RUBBER,))}
     else:
-        merged.update({k: v for k, v in (constraints or {}).items() if v is not None})
+        flagged = {k: v for k, v in (constraints or {}).items() if v is not None}
+    merged.update(flagged)
+    # every hint in the form the user set the option in: the spec's key or the flag
+    hints = Hints(Path(spec).name if spec else "",
+                  frozenset(flagged) | ({"top"} if top is not None else set()),
+                  frozenset(merged))
     objective = objective or base.get("objective", DEFAULT_OBJECTIVE)
     top = top if top is not None else base.get("top", DEFAULT_TOP)
     if isinstance(top, bool) or not isinstance(top, int) or top < 1:
@@ -267,7 +275,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
                          "(axisym), whose angle and rubber mkm design searches and verifies "
                          f"with: {calibration.how_to_add('axisym', angle=None)}")
     found = search(requirements, merged, objective, surrogate, tolerances, probability,
-                   calibration)
+                   calibration, hints)
     chosen = pick(found.feasible, top, found.constraints)
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
     demoted: frozenset = frozenset()
