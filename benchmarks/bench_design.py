@@ -22,13 +22,15 @@ Run outside the test suite:
   steeper-braid margin note): one FE solve per requirement on the chosen design's mesh.
 
 Medians, minima and the median CPU time of the process over the repeats: the machine is shared,
-and the CPU time (what the work costs without waiting for a core) is the steadier number.
+and the CPU time (what the work costs without waiting for a core) is the steadier number; the
+load average before and after is recorded with them (``load_average_before``, ``_after``).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import time
 
 import numpy as np
@@ -60,6 +62,7 @@ def main() -> None:
     parser.add_argument("--out", help="also write the results as JSON here")
     args = parser.parse_args()
     rows = []
+    load_before = os.getloadavg()
     with threadpool_limits(limits=1):
         for name, reqs in SPECS.items():
             found = search(reqs, surrogate=args.surrogate)  # loads the surrogate once
@@ -98,7 +101,9 @@ def main() -> None:
               f"{r['min_s']:7.3f} {r['cpu_median_s']:7.3f}")
     if args.out:
         with open(args.out, "w", encoding="utf-8") as f:
-            json.dump({"rows": rows, "surrogate": args.surrogate, **provenance()}, f, indent=2)
+            json.dump({"rows": rows, "surrogate": args.surrogate,
+                       "load_average_before": load_before,
+                       "load_average_after": os.getloadavg(), **provenance()}, f, indent=2)
 
 
 if __name__ == "__main__":
