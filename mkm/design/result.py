@@ -132,8 +132,10 @@ class DesignResult:
         verified again on a finer one, a robust design below the probability asked (none
         verified holds it), one whose worst corner the FE did not solve, and one met by less
         than the identified muscle's own uncertainty allows at the default probability
-        (:func:`held_with`), or, where no identified muscle says, by less than a braid 1 deg
-        steeper takes away (:attr:`steeper_braid_N`). Empty when none."""
+        (:func:`held_with`) and a chosen tube other than the identified muscle's, whose
+        uncertainty that band does not carry (:func:`_another_tube`), or, where no identified
+        muscle says, by less than a braid 1 deg steeper takes away (:attr:`steeper_braid_N`).
+        Empty when none."""
         s = self.search
         notes = [n for n in (s.length_note, s.box_note()) if n]
         best = self.chosen
@@ -188,6 +190,8 @@ class DesignResult:
                              f"{100 * held:.0f} % probability: design for "
                              f"{100 * DEFAULT_PROBABILITY:g} % ({ask}: the intervals as build "
                              "tolerances) or require more force")
+        if best is not None and any(b is not None for b in self.identified_band_N):
+            notes += _another_tube(best, s.calibration)
         short = [(k, force) for k, force in enumerate(self.steeper_braid_N, start=1)
                  if best is not None and force < s.requirements[k - 1].force_N]
         for k, force in short:
@@ -371,9 +375,12 @@ def held_with(margin_N: float, band_N: float) -> float:
 
 def identified_tolerance(calibration: Calibration | None) -> str:
     """``--tolerance`` text of the identified muscle's 95 % intervals of its braid angle and
-    rubber (1.96 standard deviations of the calibration's band, whose covariance identify
-    widened by a misfit's Birge ratio as it widened the intervals it printed: uniform
-    tolerances of that half-width are a little wider); "" without an identified muscle."""
+    rubber as identify printed them (``parameters``: the bootstrap's, widened by a misfit's
+    Birge ratio and by each model-form term's shift, such as a creep the runs could not fit),
+    the larger side of each (a build tolerance holds both); where they are not recorded, 1.96
+    standard deviations of the calibration's band, whose covariance identify widened by the
+    misfit as it widened the intervals. Uniform tolerances of that half-width are a little
+    wider than the intervals' normal spread. "" without an identified muscle."""
     from mkm.identify.band import Z95, identified_entry
 
     found = identified_entry(calibration) if calibration is not None else None
@@ -383,6 +390,11 @@ def identified_tolerance(calibration: Calibration | None) -> str:
     names, values = band["parameters"], band["values"]
     sd = np.sqrt(np.clip(np.diag(np.asarray(band["covariance"], dtype=float)), 0.0, None))
     half = dict(zip(names, Z95 * sd, strict=True))
+    for row in found[1]["identified"].get("parameters") or ():
+        low, high = row.get("ci_low"), row.get("ci_high")
+        if row.get("parameter") in half and low is not None and high is not None \
+                and np.isfinite([low, high]).all():
+            half[row["parameter"]] = max(row["value"] - low, high - row["value"])
     parts = []
     if "theta0_deg" in half:
         parts.append(f"theta0={half['theta0_deg']:.2g}")
@@ -390,6 +402,31 @@ def identified_tolerance(calibration: Calibration | None) -> str:
         scale = values[names.index("rubber_scale")]
         parts.append(f"rubber={100 * half['rubber_scale'] / scale:.2g}%")
     return ",".join(parts)
+
+
+#: A chosen tube further than this share from the identified one in D0 or t0 is another tube
+#: (:func:`_another_tube`): the declared diameter's +-0.3 mm is 1.5 % of a 20 mm tube
+ANOTHER_TUBE_SHARE = 0.02
+
+
+def _another_tube(best, calibration: Calibration | None) -> list[str]:
+    """The note of a chosen design whose tube is not the identified muscle's, whose band is
+    stated (:func:`mkm.identify.band.identified_tube`): the band carries the identified
+    parameters' uncertainty, not whether the rubber and braid fitted to one tube hold for
+    another (the rubber identified may be an effective one: the Festo DMSP-20-300's membrane,
+    fibres embedded, fits 4.6 x Silastic S); empty for the identified tube."""
+    from mkm.identify.band import identified_tube
+
+    tube = identified_tube(calibration)
+    chosen = (float(best["D0_mm"]), float(best["t0_mm"]))
+    if tube is None or np.allclose(chosen, tube, rtol=ANOTHER_TUBE_SHARE, atol=0.0):
+        return []
+    return [f"the chosen tube, {chosen[0]:.4g} x {chosen[1]:.4g} mm (D0 x t0), is not the "
+            f"identified muscle's, {tube[0]:.4g} x {tube[1]:.4g} mm: the identified "
+            "uncertainty stated carries that muscle's braid angle and rubber to it, not whether "
+            "they hold for another tube (a rubber fitted to one wall may be an effective one): "
+            "build the chosen design, identify it (mkm identify) and check its margin with its "
+            "own calibration"]
 
 
 def _in_mesh_order(meshes) -> list[str]:
