@@ -41,6 +41,7 @@ from mkm.design.robust import (
     monte_carlo_record,
 )
 from mkm.design.spec import (
+    CALIBRATED_RUBBER,
     DEFAULT_OBJECTIVE,
     DEFAULT_PROBABILITY,
     DEFAULT_RUBBER,
@@ -132,8 +133,8 @@ class DesignResult:
         verified again on a finer one, a robust design below the probability asked (none
         verified holds it), one whose worst corner the FE did not solve, and one met by less
         than the identified muscle's own uncertainty allows at the default probability
-        (:func:`held_with`) and a chosen tube other than the identified muscle's, whose
-        uncertainty that band does not carry (:func:`_another_tube`), or, where no identified
+        (:func:`held_with`) and a chosen tube of the identified rubber other than the
+        identified muscle's (:func:`_another_tube`), or, where no identified
         muscle says, by less than a braid 1 deg steeper takes away (:attr:`steeper_braid_N`).
         Empty when none."""
         s = self.search
@@ -190,7 +191,7 @@ class DesignResult:
                              f"{100 * held:.0f} % probability: design for "
                              f"{100 * DEFAULT_PROBABILITY:g} % ({ask}: the intervals as build "
                              "tolerances) or require more force")
-        if best is not None and any(b is not None for b in self.identified_band_N):
+        if best is not None and str(best["rubber"]) == CALIBRATED_RUBBER:
             notes += _another_tube(best, s.calibration)
         short = [(k, force) for k, force in enumerate(self.steeper_braid_N, start=1)
                  if best is not None and force < s.requirements[k - 1].force_N]
@@ -410,11 +411,12 @@ ANOTHER_TUBE_SHARE = 0.02
 
 
 def _another_tube(best, calibration: Calibration | None) -> list[str]:
-    """The note of a chosen design whose tube is not the identified muscle's, whose band is
-    stated (:func:`mkm.identify.band.identified_tube`): the band carries the identified
-    parameters' uncertainty, not whether the rubber and braid fitted to one tube hold for
-    another (the rubber identified may be an effective one: the Festo DMSP-20-300's membrane,
-    fibres embedded, fits 4.6 x Silastic S); empty for the identified tube."""
+    """The note of a chosen design of the identified rubber whose tube is not the identified
+    muscle's (:func:`mkm.identify.band.identified_tube`): its band, or a robust design's
+    probability, carries the identified parameters' uncertainty, not whether the rubber and
+    braid fitted to one tube hold for another (the rubber identified may be an effective one:
+    the Festo DMSP-20-300's membrane, fibres embedded, fits 4.6 x Silastic S); empty for the
+    identified tube or a calibration that records none."""
     from mkm.identify.band import identified_tube
 
     tube = identified_tube(calibration)
@@ -422,11 +424,11 @@ def _another_tube(best, calibration: Calibration | None) -> list[str]:
     if tube is None or np.allclose(chosen, tube, rtol=ANOTHER_TUBE_SHARE, atol=0.0):
         return []
     return [f"the chosen tube, {chosen[0]:.4g} x {chosen[1]:.4g} mm (D0 x t0), is not the "
-            f"identified muscle's, {tube[0]:.4g} x {tube[1]:.4g} mm: the identified "
-            "uncertainty stated carries that muscle's braid angle and rubber to it, not whether "
-            "they hold for another tube (a rubber fitted to one wall may be an effective one): "
-            "build the chosen design, identify it (mkm identify) and check its margin with its "
-            "own calibration"]
+            f"identified muscle's, {tube[0]:.4g} x {tube[1]:.4g} mm: its forces and the "
+            "identified uncertainty stated take that muscle's rubber (and braid angle) to it, "
+            "not whether they hold for another tube (a rubber fitted to one wall may be an "
+            "effective one): build the chosen design, identify it (mkm identify) and check its "
+            "margin with its own calibration"]
 
 
 def _in_mesh_order(meshes) -> list[str]:

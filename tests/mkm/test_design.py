@@ -1298,15 +1298,19 @@ def test_a_chosen_tube_other_than_the_identified_one_says_what_its_band_does_not
     assert (best["D0_mm"], best["t0_mm"]) != (40.0, 3.0)
     (note,) = [n for n in result.notes() if n.startswith("the chosen tube")]
     assert note == (f"the chosen tube, {best['D0_mm']:.4g} x {best['t0_mm']:.4g} mm (D0 x t0), "
-                    "is not the identified muscle's, 40 x 3 mm: the identified uncertainty "
-                    "stated carries that muscle's braid angle and rubber to it, not whether "
-                    "they hold for another tube (a rubber fitted to one wall may be an "
+                    "is not the identified muscle's, 40 x 3 mm: its forces and the identified "
+                    "uncertainty stated take that muscle's rubber (and braid angle) to it, not "
+                    "whether they hold for another tube (a rubber fitted to one wall may be an "
                     "effective one): build the chosen design, identify it (mkm identify) and "
                     "check its margin with its own calibration")
     # the identified tube, within the declared diameter's tolerance: no such note
     assert _another_tube({"D0_mm": 40.3, "t0_mm": 3.0}, calibration) == []
     assert _another_tube({"D0_mm": 40.0, "t0_mm": 2.5}, calibration) != []
     assert _another_tube({"D0_mm": 30.0, "t0_mm": 2.5}, _identified(tmp_path)) == []
+    # another rubber than the identified one: not that muscle's rubber taken elsewhere
+    silastic = run_design(["500N@2bar,eps=0.1"], {"theta0_deg": 32.0, "rubber": "silastic_s"},
+                          top=1, mesh=MESH, calibration=calibration, cache_dir=None)
+    assert not [n for n in silastic.notes() if n.startswith("the chosen tube")]
 
 
 def test_the_default_length_is_the_identified_muscles(tmp_path, mkm_run):
