@@ -746,7 +746,6 @@ def larger_box(row, box: dict, calibration: Calibration | None = None,
     return f"a larger box might hold {what}{widen}"
 
 
-
 def range_limits(row, box: dict) -> list[str]:
     """The searched ranges of ``box`` whose end a design ``row`` sits on where that end is the
     practical range's limit or beyond it (which :func:`box_edges` leaves out: no box is widened

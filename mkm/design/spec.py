@@ -250,7 +250,7 @@ class Hints:
         by_table: dict[str, list[str]] = {}
         for k in keys:
             by_table.setdefault(self._where(k), []).append(f"{k} = {_toml(k, values[k])}")
-        spec = [f"{', '.join(set_)} in {where}" for where, set_ in by_table.items()]
+        spec = [f"{', '.join(pairs)} in {where}" for where, pairs in by_table.items()]
         return " and ".join(part for part in (" ".join(flags), *spec) if part)
 
     def own(self, key: str) -> str:
