@@ -1264,6 +1264,25 @@ def test_the_design_pages_fe_verification_is_its_measured_file():
             "`design.json` was measured again with the wall's own)") in text
 
 
+def test_the_design_pages_steeper_braid_cost_is_its_measured_file():
+    """design.md quotes the CPU time of the chosen design's solve with its braid 1 deg steeper
+    (the steeper-braid note's) against the verification's, and the load it was measured at:
+    held to ``design.json``."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "design.json").read_text(encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "design.md").read_text(encoding="utf-8").split())
+    cpu = {(r["stage"], r["spec"]): r["cpu_median_s"] for r in record["rows"]}
+    specs = ("one point", "force-stroke")
+    steeper = [cpu[("FE steeper braid (1 deg)", s)] for s in specs]
+    verified = [cpu[("FE verification (as mkm design)", s)] for s in specs]
+    share = [round(100 * a / b) for a, b in zip(steeper, verified, strict=True)]
+    assert (f"{steeper[0]:.3f} and {steeper[1]:.3f} s of CPU against {verified[0]:.3f} and "
+            f"{verified[1]:.3f} s for the verification as `mkm design` does it, about "
+            f"{round(sum(share) / 2)} % more") in text, share
+    assert f"at a load average of {record['load_average_before'][0]:.1f}" in text
+
+
 def test_the_fe_pages_words_on_the_gaps_cost_are_its_measured_file():
     """fe-model.md quoted a gap's cost as 4-7x the trivial sweep at eps 0 and 1.1-1.4x the eps
     0.05 one, where ``axisym_gap.csv`` (the table under the words) has 3.8-5.8x and 1.05-1.09x:

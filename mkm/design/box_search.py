@@ -18,6 +18,7 @@ from mkm.design.spec import (
     NEAR_LOCK_FRACTION,
     OBJECTIVES,
     Constraints,
+    Hints,
     Requirement,
     parse_requirement,
     rubber_of,
@@ -67,6 +68,7 @@ FE_SEARCH_BOX = {"D0_mm": PRACTICAL_RANGE.D0_mm, "t0_mm": PRACTICAL_RANGE.t0_mm}
 #: The geometry the search box spans (the surrogate's training box spans them too)
 BOX_KEYS = ("D0_mm", "t0_mm")
 BOX_NAMES = {"D0_mm": "D0", "t0_mm": "t0", "L0_mm": "L0", "theta0_deg": "theta0"}
+_KEY_OF = {name: key for key, name in BOX_NAMES.items()}
 FE_SEARCH_MAX_PRESSURE_BAR = PRACTICAL_RANGE.pressure_bar[1]
 FE_SEARCH_STEPS = (2.0, 0.5)
 FE_SEARCH_MESH = "coarse"
@@ -154,6 +156,8 @@ class Search:
     #: identified muscle's of ``calibration``: :func:`mkm.identify.band.identified_lengths`) and
     #: how to set it (:func:`_length_note`), else ""
     length_note: str = ""
+    #: how the user set the options: the form every hint names them in, and the user's bounds
+    hints: Hints = field(default_factory=Hints)
 
     @property
     def feasible(self) -> pd.DataFrame:
@@ -168,7 +172,7 @@ class Search:
         """What of a design ``row`` sits on an end of what was searched: the box and the
         rubbers (:func:`box_edges`). A requirement's pressure is none: it is the requirement's,
         not searched, and a design at another pressure would not meet that requirement."""
-        return box_edges(row, self.constraints, self.calibration)
+        return box_edges(row, self.constraints, self.calibration, self.hints)
 
     def box_note(self) -> str:
         """The searched D0 x t0 box where it is not the surrogate's training box (and
@@ -249,7 +253,7 @@ def _build(text: str, calibration: Calibration | None) -> ForceModel:
 def search(requirements, constraints: Constraints | dict | None = None,
            objective: str = DEFAULT_OBJECTIVE, surrogate: str = "surrogate",
            tolerances=None, probability: float = 0.95,
-           calibration: Calibration | None = None) -> Search:
+           calibration: Calibration | None = None, hints: Hints | None = None) -> Search:
     """Predict the candidates of the design box with the surrogate and rank the feasible ones.
 
     Coarse to fine: every candidate of a coarse grid (:data:`COARSE_STEPS` in D0 and t0, times
@@ -259,7 +263,8 @@ def search(requirements, constraints: Constraints | dict | None = None,
     cell of a feasible coarse candidate.
 
     ``calibration`` gives the default braid angle and the ``calibrated`` rubber (None: the
-    shipped one).
+    shipped one). ``hints``: how the user set the options (:class:`~mkm.design.spec.Hints`;
+    None: the flags, none given).
 
     With ``tolerances`` (:class:`mkm.fem.tolerances.Tolerances`), a candidate must meet every
     requirement with ``probability`` when built to them (:mod:`mkm.design.robust`) instead of
@@ -270,6 +275,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     closest one and its shortfall per requirement).
     """
     requirements = [parse_requirement(r) if isinstance(r, str) else r for r in requirements]
+    hints = hints or Hints()
     if not requirements:
         raise ValueError("no requirement given: expected at least one --require "
                          "FORCE N@PRESSURE bar,eps=EPS (for example 400N@2bar,eps=0.10)")
@@ -314,7 +320,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
            "t0_mm": constraints.t0_mm or default_box["t0_mm"],
            "L0_mm": constraints.L0_mm or (float(at["L0_mm"]),) * 2,
            "theta0_deg": constraints.theta0_deg or (theta0_default,) * 2}
-    length_note = _length_note(constraints, box, length_origin)
+    length_note = _length_note(constraints, box, length_origin, hints)
     _check_conflicts(requirements, constraints, box, bool(outside), calibration)
     P_work = constraints.max_pressure_bar or max(r.pressure_bar for r in requirements)
     families = [(float(L0), float(theta0), rubber) for L0 in _axis(box["L0_mm"])
@@ -355,7 +361,7 @@ def search(requirements, constraints: Constraints | dict | None = None,
     result = Search(cand, requirements, _describe_constraints(constraints, box), objective,
                     float(P_work), evaluate.uncertainty, time.perf_counter() - start, models,
                     fe_search, spec.text, "; ".join(n for n in (searcher_note, rubber_note) if n),
-                    calibration, surrogate_box, box_origin, gap, length_note)
+                    calibration, surrogate_box, box_origin, gap, length_note, hints)
     if not cand["feasible"].any():
         raise ValueError(_infeasible_message(result, constraints))
     return result
@@ -463,16 +469,21 @@ def _identified_length(constraints: Constraints, calibration: Calibration | None
     return constraints, ""
 
 
-def _length_note(constraints: Constraints, box: dict, origin: str) -> str:
-    """The note of a length not given (:attr:`Search.length_note`): the one designed
-    (``box["L0_mm"]``), where it came from (``origin`` of :func:`_identified_length`, else the
-    surrogate's length), that the force depends on it and how to set it, and the tubes of the
-    box it is short for (below the practical range's L0 >= 3 D0); "" where L0 was given. A
+def _length_note(constraints: Constraints, box: dict, origin: str,
+                 hints: Hints | None = None) -> str:
+    """The note of a length not given (:attr:`Search.length_note`, and the end of an
+    infeasible search's message: a force out of reach may be in reach at another length): the
+    one designed (``box["L0_mm"]``), where it came from (``origin`` of
+    :func:`_identified_length`, else the surrogate's length), that the force depends on it and
+    how to set it (in the form of ``hints``: :class:`~mkm.design.spec.Hints`), and the tubes of
+    the box it is short for (below the practical range's L0 >= 3 D0); "" where L0 was given. A
     design is verified at one length, and its clamped ends take a larger share of a shorter
     muscle's force (the FE: a 10 x 0.5 mm tube at 6 bar, eps 0.1 pulls 129.4 N 282 mm long,
-    117.5 N 60 mm long)."""
+    117.5 N 60 mm long; a 50 x 4 mm one at 2.5 bar, eps 0.1, 1211 N and 1352 N 1000 mm
+    long)."""
     if constraints.L0_mm is not None and origin != "identified":
         return ""
+    hints = hints or Hints()
     L0 = float(box["L0_mm"][0])
     where = ("the identified muscle's length (--calibration)" if origin == "identified" else
              "the default, the length of the paper's muscle" if L0 == L0_MM else
@@ -484,8 +495,9 @@ def _length_note(constraints: Constraints, box: dict, origin: str) -> str:
              "outside the practical range, where the ends are much of the muscle"
              if L0 < k * box["D0_mm"][1] else "")
     return (f"L0 {L0:g} mm assumed, not given: {where}; the force depends on the length "
-            "through the clamped ends, a shorter muscle pulling less: --L0 MM designs the "
-            f"length to be built, --L0 A:B searches a range of it{short}")
+            "through the clamped ends, a shorter muscle pulling less: "
+            f"{hints.option('L0_mm', 'MM')} designs the length to be built, "
+            f"{hints.option('L0_mm', 'A:B')} searches a range of it{short}")
 
 
 def _walls(D0: np.ndarray, t0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -666,14 +678,19 @@ def box_text(box: dict) -> str:
                       for k, v in box.items())
 
 
-def box_edges(row, box: dict, calibration: Calibration | None = None) -> list[str]:
+def box_edges(row, box: dict, calibration: Calibration | None = None,
+              hints: Hints | None = None) -> list[str]:
     """The searched ranges of ``box`` (D0, t0, L0, theta0; a fixed value is no range) whose
-    end a design ``row`` sits on, as ``D0 = 30 mm (the lower end of 30:50)``, and its rubber
+    end a design ``row`` sits on, as ``D0 = 30 mm (the lower end of 30:50)``, ``L0 = 250 mm
+    (the upper end of 50:250, your --L0)`` where the user gave that range (``hints``:
+    :class:`~mkm.design.spec.Hints`, in the form they gave it), and its rubber
     where several were searched and it is the softest or the stiffest of them (by C10; the
     ``calibrated`` one is ``calibration``'s): there a larger box might hold a better design.
     An end at the practical range's limit or beyond it is none (:func:`range_limits`): no box
     is widened past that limit."""
-    edges = [f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)})"
+    hints = hints or Hints()
+    edges = [f"{name} = {at:.4g} {unit} (the {end} end of {span_text(low, high)}"
+             + (f", {own})" if (own := hints.own(_KEY_OF[name])) else ")")
              for name, at, unit, end, (low, high), limit in _ends(row, box) if limit is None]
     end, C10 = _rubber_end(row, box, calibration)
     if end:
@@ -695,24 +712,37 @@ def _rubber_end(row, box: dict, calibration: Calibration | None) -> tuple[str, d
 
 
 def larger_box(row, box: dict, calibration: Calibration | None = None,
-               what: str = "a better design") -> str:
+               what: str = "a better design", hints: Hints | None = None,
+               within: str = "this design is the best found") -> str:
     """``a larger box might hold WHAT: widen it, e.g. --D0 20:50 --t0 1:4``: the options that
     widen each searched range whose end a design ``row`` sits on (:func:`box_edges`), that end
-    moved out by half the range's span, no further than the practical range's limit (an end at
-    that limit or beyond it is widened no further: :func:`range_limits`), and ``--rubber``
-    where the rubber is an end of those searched."""
-    options = []
-    for name, _, _, end, (low, high), limit in _ends(row, box):
+    alone moved out by half the range's span, no further than the practical range's limit (an
+    end at that limit or beyond it is widened no further: :func:`range_limits`), and
+    ``--rubber`` where the rubber is an end of those searched; in the form the user set them
+    (``hints``: :class:`~mkm.design.spec.Hints`). An end the user gave is their own bound,
+    perhaps the application's (the longest muscle that fits): said, widened only where the
+    application allows, and ``within`` it what holds."""
+    hints = hints or Hints()
+    options, own = {}, []
+    for name, at, unit, end, (low, high), limit in _ends(row, box):
         if limit is None:
-            key = next(k for k, n in BOX_NAMES.items() if n == name)
+            key = _KEY_OF[name]
             limit_low, limit_high = getattr(PRACTICAL_RANGE, key)
             half = (high - low) / 2
-            options.append(f"--{name} " + (span_text(max(low - half, limit_low), high)
-                                           if end == "lower" else
-                                           span_text(low, min(high + half, limit_high))))
-    widen = f": widen it, e.g. {' '.join(options)}" if options else ""
+            options[key] = (span_text(max(low - half, limit_low), high) if end == "lower" else
+                            span_text(low, min(high + half, limit_high)))
+            if key in hints.given:
+                own.append(f"{name} {at:.4g} {unit}")
+    widen = f": widen it, e.g. {hints.options(options)}" if options else ""
+    if own:
+        *others, last = own
+        bounds = f"{', '.join(others)} and {last} are" if others else f"{last} is"
+        widen += (f" ({bounds} your own bound{'s' if others else ''}: past "
+                  f"{'them' if others else 'it'} only where the application allows; within "
+                  f"{'them' if others else 'it'}, {within})")
     if end := _rubber_end(row, box, calibration)[0]:
-        widen += f"{'; or' if options else ':'} add a {end}er rubber to --rubber"
+        widen += (f"{'; or' if options else ':'} add a {end}er rubber to "
+                  f"{hints.name('rubber')}")
     return f"a larger box might hold {what}{widen}"
 
 
@@ -798,7 +828,7 @@ def _beyond_practical_range(row, requirements, calibration: Calibration | None =
             "the range)" if outside else "")
 
 
-def _near_lock(req: Requirement, theta0_low_deg: float) -> str:
+def _near_lock(req: Requirement, theta0_low_deg: float, hints: Hints | None = None) -> str:
     """The clause a short requirement's part of an infeasible search's message ends with when
     its eps is near the braid lock even at the smallest braid angle searched (the largest
     lock), where no tube delivers much force, else empty."""
@@ -807,8 +837,8 @@ def _near_lock(req: Requirement, theta0_low_deg: float) -> str:
         return ""
     return (f": eps {req.eps:g} is near the braid lock (eps_max {eps_max:.3g} at theta0 "
             f"{theta0_low_deg:.4g} deg, the smallest braid angle searched), where the force "
-            "falls to zero: ask for a lower eps, or search smaller braid angles (theta0), whose "
-            "lock lies at a larger eps")
+            "falls to zero: ask for a lower eps, or search smaller braid angles "
+            f"({(hints or Hints()).name('theta0_deg')}), whose lock lies at a larger eps")
 
 
 def _angle_unsearched(result: Search, may: str = "hold a narrower muscle") -> str:
@@ -820,7 +850,20 @@ def _angle_unsearched(result: Search, may: str = "hold a narrower muscle") -> st
         return ""
     lowest, highest = PRACTICAL_RANGE.theta0_deg
     return (f"; the braid angle was held at {low:.4g} deg: a range of it may {may} "
-            f"(--theta0 {lowest:g}:{highest:g})")
+            f"({result.hints.option('theta0_deg', f'{lowest:g}:{highest:g}')})")
+
+
+def _edge_clause(result: Search, row, what: str) -> str:
+    """The clause an infeasible search's message says where its closest design ``row`` sits on
+    an end of a searched range (the box, not the physics, may be short), with the options that
+    widen it (:func:`larger_box`: a larger box might hold ``what``), else ""."""
+    edges = result.edges(row)
+    if not edges:
+        return ""
+    ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
+    return (f"; it sits on the edge of the search box {box_text(ranges)}: {', '.join(edges)}; "
+            + larger_box(row, result.constraints, result.calibration, what, result.hints,
+                         "none does"))
 
 
 def _infeasible_message(result: Search, constraints: Constraints) -> str:
@@ -830,7 +873,10 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         return (f"infeasible: no design meets every requirement within max_outer_diameter_mm="
                 f"{constraints.max_outer_diameter_mm:g}: the narrowest that does, "
                 f"{geometry_text(best)}, is {best['outer_diameter_mm']:.1f} mm wide at "
-                f"{result.working_pressure_bar:g} bar" + _angle_unsearched(result)
+                f"{result.working_pressure_bar:g} bar"
+                + _edge_clause(result, best, "a narrower one that meets them")
+                + _angle_unsearched(result)
+                + (f"; {result.length_note}" if result.length_note else "")
                 + _beyond_practical_range(best, result.requirements, result.calibration))
     pool = cand[cand["fits_housing"]] if cand["fits_housing"].any() else cand
     closest = pool.sort_values("min_margin_pct", ascending=False).iloc[0]
@@ -838,25 +884,22 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
     for k, req in enumerate(result.requirements, start=1):
         force = closest[f"r{k}_surrogate_N"]
         short = req.force_N - force
-        lock = _near_lock(req, result.constraints["theta0_deg"][0]) if short > 0 else ""
+        lock = (_near_lock(req, result.constraints["theta0_deg"][0], result.hints)
+                if short > 0 else "")
         near_lock |= bool(lock)
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force")
             + lock)
-    edge = ""
-    if edges := result.edges(closest):  # the box, not the physics, may be short
-        ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
-        edge = (f"; it sits on the edge of the search box {box_text(ranges)}: "
-                f"{', '.join(edges)}; "
-                + larger_box(closest, result.constraints, result.calibration,
-                             "a design that meets them"))
+    edge = _edge_clause(result, closest, "a design that meets them")
     return (f"infeasible: no design in the box meets every requirement with the surrogate's "
             f"margin ({result.uncertainty}); closest: {geometry_text(closest)}: "
             + "; ".join(parts) + edge
             # near the lock, that clause says to search smaller angles already
             + ("" if near_lock else _angle_unsearched(result, "meet them, a smaller one "
                                                       "pulling more"))
+            # the length a force out of reach may be in reach at, where none was given
+            + (f"; {result.length_note}" if result.length_note and not near_lock else "")
             + _beyond_practical_range(closest, result.requirements, result.calibration))
 
 

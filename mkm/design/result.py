@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -40,12 +41,14 @@ from mkm.design.robust import (
     monte_carlo_record,
 )
 from mkm.design.spec import (
+    CALIBRATED_RUBBER,
     DEFAULT_OBJECTIVE,
     DEFAULT_PROBABILITY,
     DEFAULT_RUBBER,
     DEFAULT_TOP,
     NEAR_LOCK_FRACTION,
     Constraints,
+    Hints,
     design_muscle,
     load_spec,
     parse_requirement,
@@ -130,8 +133,10 @@ class DesignResult:
         verified again on a finer one, a robust design below the probability asked (none
         verified holds it), one whose worst corner the FE did not solve, and one met by less
         than the identified muscle's own uncertainty allows at the default probability
-        (:func:`held_with`), or, where no identified muscle says, by less than a braid 1 deg
-        steeper takes away (:attr:`steeper_braid_N`). Empty when none."""
+        (:func:`held_with`) and a chosen tube of the identified rubber other than the
+        identified muscle's (:func:`_another_tube`), or, where no identified
+        muscle says, by less than a braid 1 deg steeper takes away (:attr:`steeper_braid_N`).
+        Empty when none."""
         s = self.search
         notes = [n for n in (s.length_note, s.box_note()) if n]
         best = self.chosen
@@ -153,7 +158,7 @@ class DesignResult:
                       if k in BOX_NAMES and v[1] > v[0]}
             notes.append(f"the chosen design sits on the edge of the search box "
                          f"{box_text(ranges)}: {', '.join(edges)}; "
-                         + larger_box(best, s.constraints, s.calibration))
+                         + larger_box(best, s.constraints, s.calibration, hints=s.hints))
         if best is not None and (limits := range_limits(best, s.constraints)):
             beyond = any(", beyond its " in limit for limit in limits)
             notes.append(f"the chosen design sits on the practical range's limit"
@@ -164,7 +169,8 @@ class DesignResult:
             notes.append(f"no verified design holds every requirement with the "
                          f"{100 * self.probability:g} % asked (the chosen one: "
                          f"{100 * best['probability_all']:.1f} % of the Monte Carlo draws): "
-                         "verify more designs (--top) or ask for a wider margin")
+                         f"verify more designs ({s.hints.name('top')}) or ask for a wider "
+                         "margin")
         unsolved = [] if best is None else [
             flag.split(":")[0] for flag in str(best["flags"]).split(";")
             if flag.endswith(f":{WORST_CORNER_UNSOLVED}")]
@@ -185,6 +191,8 @@ class DesignResult:
                              f"{100 * held:.0f} % probability: design for "
                              f"{100 * DEFAULT_PROBABILITY:g} % ({ask}: the intervals as build "
                              "tolerances) or require more force")
+        if best is not None and str(best["rubber"]) == CALIBRATED_RUBBER:
+            notes += _another_tube(best, s.calibration)
         short = [(k, force) for k, force in enumerate(self.steeper_braid_N, start=1)
                  if best is not None and force < s.requirements[k - 1].force_N]
         for k, force in short:
@@ -247,10 +255,15 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         parse_requirement(r) if isinstance(r, str) else r for r in requirements]
     merged = dict(base["constraints"])
     if isinstance(constraints, Constraints):
-        merged.update({k: v for k, v in asdict(constraints).items()
-                       if v is not None and not (k == "rubber" and v == (DEFAULT_RUBBER,))})
+        flagged = {k: v for k, v in asdict(constraints).items()
+                   if v is not None and not (k == "rubber" and v == (DEFAULT_RUBBER,))}
     else:
-        merged.update({k: v for k, v in (constraints or {}).items() if v is not None})
+        flagged = {k: v for k, v in (constraints or {}).items() if v is not None}
+    merged.update(flagged)
+    # every hint in the form the user set the option in: the spec's key or the flag
+    hints = Hints(Path(spec).name if spec else "",
+                  frozenset(flagged) | ({"top"} if top is not None else set()),
+                  frozenset(merged))
     objective = objective or base.get("objective", DEFAULT_OBJECTIVE)
     top = top if top is not None else base.get("top", DEFAULT_TOP)
     if isinstance(top, bool) or not isinstance(top, int) or top < 1:
@@ -267,7 +280,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
                          "(axisym), whose angle and rubber mkm design searches and verifies "
                          f"with: {calibration.how_to_add('axisym', angle=None)}")
     found = search(requirements, merged, objective, surrogate, tolerances, probability,
-                   calibration)
+                   calibration, hints)
     chosen = pick(found.feasible, top, found.constraints)
     chosen.insert(0, "rank", np.arange(1, len(chosen) + 1))
     demoted: frozenset = frozenset()
@@ -363,9 +376,12 @@ def held_with(margin_N: float, band_N: float) -> float:
 
 def identified_tolerance(calibration: Calibration | None) -> str:
     """``--tolerance`` text of the identified muscle's 95 % intervals of its braid angle and
-    rubber (1.96 standard deviations of the calibration's band, whose covariance identify
-    widened by a misfit's Birge ratio as it widened the intervals it printed: uniform
-    tolerances of that half-width are a little wider); "" without an identified muscle."""
+    rubber as identify printed them (``parameters``: the bootstrap's, widened by a misfit's
+    Birge ratio and by each model-form term's shift, such as a creep the runs could not fit),
+    the larger side of each (a build tolerance holds both); where they are not recorded, 1.96
+    standard deviations of the calibration's band, whose covariance identify widened by the
+    misfit as it widened the intervals. Uniform tolerances of that half-width are a little
+    wider than the intervals' normal spread. "" without an identified muscle."""
     from mkm.identify.band import Z95, identified_entry
 
     found = identified_entry(calibration) if calibration is not None else None
@@ -375,6 +391,11 @@ def identified_tolerance(calibration: Calibration | None) -> str:
     names, values = band["parameters"], band["values"]
     sd = np.sqrt(np.clip(np.diag(np.asarray(band["covariance"], dtype=float)), 0.0, None))
     half = dict(zip(names, Z95 * sd, strict=True))
+    for row in found[1]["identified"].get("parameters") or ():
+        low, high = row.get("ci_low"), row.get("ci_high")
+        if row.get("parameter") in half and low is not None and high is not None \
+                and np.isfinite([low, high]).all():
+            half[row["parameter"]] = max(row["value"] - low, high - row["value"])
     parts = []
     if "theta0_deg" in half:
         parts.append(f"theta0={half['theta0_deg']:.2g}")
@@ -382,6 +403,32 @@ def identified_tolerance(calibration: Calibration | None) -> str:
         scale = values[names.index("rubber_scale")]
         parts.append(f"rubber={100 * half['rubber_scale'] / scale:.2g}%")
     return ",".join(parts)
+
+
+#: A chosen tube further than this share from the identified one in D0 or t0 is another tube
+#: (:func:`_another_tube`): the declared diameter's +-0.3 mm is 1.5 % of a 20 mm tube
+ANOTHER_TUBE_SHARE = 0.02
+
+
+def _another_tube(best, calibration: Calibration | None) -> list[str]:
+    """The note of a chosen design of the identified rubber whose tube is not the identified
+    muscle's (:func:`mkm.identify.band.identified_tube`): its band, or a robust design's
+    probability, carries the identified parameters' uncertainty, not whether the rubber and
+    braid fitted to one tube hold for another (the rubber identified may be an effective one:
+    the Festo DMSP-20-300's membrane, fibres embedded, fits 4.6 x Silastic S); empty for the
+    identified tube or a calibration that records none."""
+    from mkm.identify.band import identified_tube
+
+    tube = identified_tube(calibration)
+    chosen = (float(best["D0_mm"]), float(best["t0_mm"]))
+    if tube is None or np.allclose(chosen, tube, rtol=ANOTHER_TUBE_SHARE, atol=0.0):
+        return []
+    return [f"the chosen tube, {chosen[0]:.4g} x {chosen[1]:.4g} mm (D0 x t0), is not the "
+            f"identified muscle's, {tube[0]:.4g} x {tube[1]:.4g} mm: its forces and the "
+            "identified uncertainty stated take that muscle's rubber (and braid angle) to it, "
+            "not whether they hold for another tube (a rubber fitted to one wall may be an "
+            "effective one): build the chosen design, identify it (mkm identify) and check its "
+            "margin with its own calibration"]
 
 
 def _in_mesh_order(meshes) -> list[str]:

@@ -211,6 +211,67 @@ class Constraints:
             object.__setattr__(self, "gap_mm", check_value("gap_mm", self.gap_mm))
 
 
+#: The flag of each option a hint may name (a spec file's key is the same name)
+FLAG_OF = {"D0_mm": "--D0", "t0_mm": "--t0", "L0_mm": "--L0", "theta0_deg": "--theta0",
+           "rubber": "--rubber", "max_outer_diameter_mm": "--max-outer-diameter",
+           "max_pressure_bar": "--max-pressure", "gap_mm": "--gap", "top": "--top"}
+
+
+@dataclass(frozen=True)
+class Hints:
+    """How the user set the design's options, so that a hint is in the form they use: a
+    ``--spec`` file's keys (``L0_mm = [60, 120] in spec.toml's [constraints]``) for an option
+    the flags did not set over it, else the flag (``--L0 60:120``); and which options the user
+    gave (the spec's or a flag's), whose ends are the user's own bounds.
+
+    ``spec``: the spec file's name ("" without); ``flags``: the options a flag set (over the
+    spec's); ``given``: every option the user set, by flag or in the spec."""
+
+    spec: str = ""
+    flags: frozenset = frozenset()
+    given: frozenset = frozenset()
+
+    def in_spec(self, key: str) -> bool:
+        return bool(self.spec) and key not in self.flags
+
+    def name(self, key: str) -> str:
+        """``--L0``, or ``L0_mm in spec.toml's [constraints]`` (``top in spec.toml``)."""
+        return f"{key} in {self._where(key)}" if self.in_spec(key) else FLAG_OF[key]
+
+    def option(self, key: str, value: str) -> str:
+        """``--L0 60:120``, or ``L0_mm = [60, 120] in spec.toml's [constraints]``; ``value``
+        as the flag takes it (``MM``, ``A:B``, ``calibrated,silastic_s``)."""
+        return self.options({key: value})
+
+    def options(self, values: dict) -> str:
+        """Several :meth:`option` s: the flags', then the spec's keys, each table named once."""
+        flags = [f"{FLAG_OF[k]} {v}" for k, v in values.items() if not self.in_spec(k)]
+        keys = [k for k in values if self.in_spec(k)]
+        by_table: dict[str, list[str]] = {}
+        for k in keys:
+            by_table.setdefault(self._where(k), []).append(f"{k} = {_toml(k, values[k])}")
+        spec = [f"{', '.join(pairs)} in {where}" for where, pairs in by_table.items()]
+        return " and ".join(part for part in (" ".join(flags), *spec) if part)
+
+    def own(self, key: str) -> str:
+        """``your --L0`` or ``your L0_mm in spec.toml's [constraints]`` where the user gave
+        ``key``, else ""."""
+        return f"your {self.name(key)}" if key in self.given else ""
+
+    def _where(self, key: str) -> str:
+        return self.spec if key == "top" else f"{self.spec}'s [constraints]"
+
+
+def _toml(key: str, value: str) -> str:
+    """A flag's value as the spec file's TOML: ``60:120`` -> ``[60, 120]``, ``a,b`` ->
+    ``["a", "b"]`` (a rubber), a number or a placeholder (``MM``) as it is."""
+    if key == "rubber":
+        return "[" + ", ".join(f'"{r}"' for r in value.split(",")) + "]"
+    if ":" in value:
+        return "[" + ", ".join(value.split(":")) + "]"
+    return value
+
+
 SPEC_KEYS = {"objective", "top", "requirement", "constraints"}
 
 

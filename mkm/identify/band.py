@@ -73,6 +73,21 @@ def identified_lengths(calibration) -> list[float]:
     return fitted[:1] or list(dict.fromkeys(float(v) for v in declared if v is not None))
 
 
+def identified_tube(calibration) -> tuple[float, float] | None:
+    """``(D0_mm, t0_mm)`` of the tube ``calibration`` was identified on (``mkm identify``
+    records its runs, of one tube): a fitted value where identify fitted it, else the runs'
+    declared one; None for the shipped calibration or one that records none."""
+    found = identified_entry(calibration) if calibration is not None else None
+    if found is None:
+        return None
+    record = found[1]["identified"]
+    fitted = {p["parameter"]: float(p["value"]) for p in record.get("parameters", [])
+              if p.get("status") == "fitted" and p.get("value") is not None}
+    declared = next((r["muscle"] for r in record.get("runs", []) if r.get("muscle")), {})
+    tube = [fitted.get(k, declared.get(k)) for k in ("D0_mm", "t0_mm")]
+    return None if None in tube else (float(tube[0]), float(tube[1]))
+
+
 def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps):
     """The 95 % half-width [N] of each force ``force_N`` the model of ``spec`` (a
     :class:`mkm.registry.Spec`) predicted with ``calibration`` at the inputs; None where the
