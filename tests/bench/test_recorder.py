@@ -547,9 +547,11 @@ def test_rows_are_synced_to_the_disk_when_the_acquisition_stalls(config, tmp_pat
                                                                  monkeypatch):
     # the rows were synced only at a write a second after the last sync: a DAQ read that hangs
     # (no new rows) left the last ones in the operating system's cache, lost to a power cut
-    # for as long as it hung. Now the recorder's thread syncs them SYNC_EVERY_S after the last
+    # for as long as it hung. The recorder's thread syncs them SYNC_EVERY_S after the last
     # sync whatever comes. Here the read of sample 45 hangs until the rows before it are synced
-    # (the test's net: 60 s)
+    # (the test's net: 60 s); the last of them, sample 44, is written only once the read hangs,
+    # so its sync is the one nothing but the clock calls for (left to the threads, the rows
+    # could be synced before the read began, and the hang waited for the watchdog's vent)
     import os
     import threading
 
@@ -557,24 +559,33 @@ def test_rows_are_synced_to_the_disk_when_the_acquisition_stalls(config, tmp_pat
     from mkm.bench.sim import SimBackend
 
     backend = SimBackend(config)
-    read, synced, hung = backend.read, threading.Event(), {}
+    read, hanging_now, synced, hung = backend.read, threading.Event(), threading.Event(), {}
 
     def hanging(n, timeout):
         if backend._index == 45 and not hung:
             hung["rows"] = 45
+            hanging_now.set()
             hung["synced"] = synced.wait(60)
         return read(n, timeout)
+
+    append = RunWriter.append_samples
+
+    def after_the_hang(self, rows):
+        if rows[-1].sample == hung.get("rows", 45) - 1:
+            hanging_now.wait(60)
+        append(self, rows)
 
     fsync = os.fsync
 
     def spy(fd):
         fsync(fd)
         f = run.recorder.writer._files.get("samples", (None,))[0] if run.recorder else None
-        if hung and f is not None and not f.closed and fd == f.fileno() and \
-                run.recorder.meta.counters["samples"] == hung["rows"]:
+        if f is not None and not f.closed and fd == f.fileno() and \
+                run.recorder.meta.counters["samples"] == 45:
             synced.set()
 
     backend.read = hanging
+    monkeypatch.setattr(RunWriter, "append_samples", after_the_hang)
     monkeypatch.setattr(os, "fsync", spy)
     run = BenchRun(config, backend, tmp_path, handle_signals=False, notify=lambda m: None)
     result = run.execute()
