@@ -249,6 +249,10 @@ SURE_FRACTION = 0.5
 #: Braid friction: a force held as the pressure falls reads up to this share above the static
 #: one (Davis & Caldwell 2006 report loops of several %; the simulator's play is 3 %).
 FRICTION_FRACTION = 0.1
+#: Creep: a muscle's force loses at most this share of itself as the rubber relaxes: silicone
+#: relaxes by a few % over a minute's hold (identify's
+#: :data:`~mkm.identify.procedure.UNTIMED_CREEP_FRACTION`, 3 %; the simulator's 2 %).
+CREEP_FRACTION = 0.05
 
 
 def force_bounds_N(config, n: int = 1001) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
