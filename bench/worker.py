@@ -384,7 +384,15 @@ class Acquisition:
             self._held_low = self._held_high = (math.nan, math.nan)
             self._last3_bar.clear()  # the readings since the code was first read
             self._peak_at_code = None
-        if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
+        plausible = math.isfinite(pressure) and not (self.electronic
+                                                     and reg.monitor_fault(monitor_V))
+        # a hand regulator's samples acquired while the operator turned it, read after the
+        # reading typed: their pressure lies anywhere between that reading and the one before,
+        # so the stuck-cell interlock of a quiet cell takes them at neither, only the peak
+        # since the vent as high as the new one
+        if plausible and phase == "operator":
+            self._peak_bar = max(self._peak_bar, pressure)
+        elif plausible:
             self._last3_bar.append(pressure)
             if len(self._last3_bar) == 3:
                 median = statistics.median(self._last3_bar)
@@ -395,6 +403,7 @@ class Acquisition:
             self._vented3_bar.append(pressure)
             vented = statistics.median(self._vented3_bar) <= self.config.safety.vent_below_bar
             self._peak_bar = pressure if vented else max(self._peak_bar, pressure)
+        if plausible:
             self._same_low_bar = min(self._same_low_bar, pressure)
             if pressure - self._same_low_bar > self._same_rise[0]:
                 self._same_rise = (pressure - self._same_low_bar, self._same_low_bar, pressure)

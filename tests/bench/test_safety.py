@@ -800,6 +800,42 @@ def test_a_quiet_load_cell_stuck_under_a_manual_regulator_stops_at_the_pressure_
                    **QUIET).status == "complete"  # the live cell: no trip
 
 
+def test_a_quiet_load_cell_under_a_hand_regulator_turned_slowly_is_not_called_stuck(
+        tmp_path, monkeypatch):
+    # The operator turns the hand regulator and types the manometer's reading once it settles,
+    # as asked: the samples acquired meanwhile are read after it (the operator's). At eps 0.2
+    # the muscle pulls nothing below its threshold, so the quiet live cell held its code over
+    # the turn's first samples, which were judged at the 2.5 bar typed: `the load cell read
+    # 0.0146 V (-0.01 N) unchanged from 1.3 s while the manometer's reading rose from 0.00 to
+    # 2.50 bar, which moves the muscle's force by 67.0 N or more`, a live cell failed as stuck.
+    # Their pressure lies anywhere between the two readings: the interlock judges the
+    # samples after; a stuck cell is still stopped there
+    from mkm.bench.sim import MANOMETER_RESOLUTION_BAR
+
+    def settled(self, pressure_bar):
+        self.bench.target_bar = pressure_bar
+        for _ in range(300):  # the operator waits for the manometer, 30 s at most
+            if abs(self.bench.pressure_bar - pressure_bar) < MANOMETER_RESOLUTION_BAR / 2:
+                break
+            self._acquire(1)
+        return round(pressure_bar / MANOMETER_RESOLUTION_BAR) * MANOMETER_RESOLUTION_BAR
+
+    monkeypatch.setattr(SimBackend, "set_manual_pressure", settled)
+    c = load_config().replace(muscle={"eps": 0.2}, regulator={"kind": "manual"},
+                              sim={"noise_V": 0.0003})
+    live = acquire(c, out_root=tmp_path, **QUIET)
+    assert live.status == "complete", live.reason
+    run = load_run(live.path)
+    assert (run.samples["phase"] == "operator").sum() > 100  # the turns' samples
+    assert run.samples.query("phase == 'tare'")["loadcell_V"].nunique() <= 2  # quiet
+    stuck = acquire(c.replace(sim={"faults": {"loadcell_stuck_at_s": 1.5}}), out_root=tmp_path,
+                    **QUIET)
+    assert stuck.status == "failed" and re.match(
+        r"force interlock: the load cell read 0\.0146 V \(-0\.01 N\) unchanged from 1\.3 s "
+        r"while the manometer's reading rose from 0\.00 to 2\.50 bar, which moves the muscle's "
+        r"force by 67\.0 N or more at eps 0\.2 ", stuck.reason), stuck.reason
+
+
 def test_a_quiet_load_cell_on_one_code_under_a_slack_muscle_trips_nothing(config, tmp_path):
     # At eps 0.25 the muscle is slack up to 2.48 bar (its FE force), the thick-wall model at
     # the declared tolerances' weakest says so too: the steps at 0.5 and 1.0 bar read the
@@ -1392,9 +1428,12 @@ def test_a_cell_far_larger_than_the_muscle_is_a_warning_from_check(tmp_path, mkm
         sequence={"pressures_bar": tuple(0.5 * k for k in range(1, 17))})
     (tmp_path / "tiny.toml").write_text(tiny.effective_text())
     code, out, err = mkm_cli(["check", "--config", str(tmp_path / "tiny.toml")])
-    # and the packaged settle and noise limits, sized for the 30 mm muscle (preflight's own)
-    assert code == 0 and err.count("mkm check: warning:") == 2
+    # and the packaged settle and noise limits, sized for the 30 mm muscle (preflight's own),
+    # and the simulated amplifier's zero, 2.93 N from the configured one, read at rest
+    assert code == 0 and err.count("mkm check: warning:") == 3
     assert err.count("warning: the settle and noise limits are sized for a stronger muscle") == 1
+    assert err.count("warning: the tare's zero is +2.93 N from loadcell.offset_V=0 V, 75 % of "
+                     "the 3.9 N the muscle pulls at the lowest step, 0.5 bar") == 1
     # at 0.5 bar, Equation 2 on the 6.6 mm braid: 3.89 N (62.3 N / 16), one ADC step of 0.24 N
     # (1.22 mV x 196 N/V) 6.1 % of it, the non-linearity's 0.98 N (0.05 % of 1961 N) 25 %
     assert "the muscle develops at most about 62.3 N at 8 bar (Equation 2 on the braid's " \
