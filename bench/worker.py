@@ -138,7 +138,8 @@ class Acquisition:
         self.monitor_low_bar = 0.0
         self._held_cell: tuple[float, float] | None = None  # (the code held [V], since [s])
         # the load cell's last code [V] and since when it has read it [s], the first sample
-        # acquired under a pressure commanded [s], and the highest plausible pressure measured
+        # acquired under a pressure commanded or set by hand [s], and the highest plausible
+        # pressure measured
         # [bar]: a cell on one code from before any pressure to the end, while the muscle was
         # pressurised, measured nothing (:meth:`one_code_throughout`); so did one on one code
         # from any time to the end while the monitor rose more than the vent threshold: the
@@ -416,7 +417,8 @@ class Acquisition:
                     self._pressurised = (pressure, commanded)
         if self._peak_at_code is None and self._same_cell is not None:
             self._peak_at_code = self._peak_bar
-        if self._pressure_from_s is None and commanded > 0:
+        set_bar = commanded if self.electronic else self.manometer_bar
+        if self._pressure_from_s is None and set_bar > 0:
             self._pressure_from_s = index / self.rate_hz
         if math.isfinite(force):
             (self._vent_N if phase == "vent" else self._recent_N).append(force)
@@ -760,19 +762,20 @@ class Acquisition:
         later time to its end while the monitor rose by more than that, means (its forces
         from then measure nothing: no muscle that pulls more as its pressure rises, nor one
         that lets go at the vent, holds a live cell to one code; a slack one with a cell
-        quieter than a step may), or "" (a cell that moved, an electronic regulator never
-        commanded, a manual one)."""
+        quieter than a step may), or "" (a cell that moved, a regulator never commanded or
+        set to a pressure)."""
         below = self.config.safety.vent_below_bar
         if self._same_cell is None or self._pressure_from_s is None:
             return ""
         same, since_s = self._same_cell
         step_N = self.step_N
         blind = "its forces measure nothing, and the force limit was blind"
+        read = "the monitor" if self.electronic else "the manometer's reading"
         if since_s <= self._pressure_from_s:
             if not self.highest_bar > below:
                 return ""
             return (f"the load cell read one ADC code ({same:.4f} V) from before the first "
-                    f"pressure to the end, while the monitor read up to {self.highest_bar:.2f} "
+                    f"pressure to the end, while {read} was up to {self.highest_bar:.2f} "
                     f"bar: a stuck or disconnected cell, or a muscle that never pulled one ADC "
                     f"step ({step_N:.2f} N); {blind}")
         rise, low, high = self._same_rise
@@ -781,7 +784,7 @@ class Acquisition:
         force_N = (same - self.tare_offset_V) * self.cell.sensitivity_N_per_V
         return (f"the load cell read one ADC code ({same:.4f} V, {force_N:+.2f} N) from "
                 f"{since_s:g} s to the end, the vent included, "
-                f"while the monitor rose from {low:.2f} to {high:.2f} bar: a stuck or "
+                f"while {read} rose from {low:.2f} to {high:.2f} bar: a stuck or "
                 f"disconnected cell, or a muscle that pulled not one ADC step ({step_N:.2f} N) "
                 f"more as its pressure rose; from {since_s:g} s {blind}")
 

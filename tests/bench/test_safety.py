@@ -858,6 +858,24 @@ def test_a_quiet_load_cell_on_one_code_under_a_slack_muscle_trips_nothing(config
         assert not load_run(path).samples["flags"].str.contains("interlock").any()
 
 
+def test_a_quiet_load_cell_on_one_code_under_a_hand_regulator_and_a_slack_muscle_fails(
+        tmp_path):
+    # as above with a hand regulator: the cell stuck from the tare read one code to the end
+    # while the manometer's reading went up to 2.5 bar, and the run ended complete, exit 0
+    # (the check asked for a pressure commanded, which a hand regulator never has)
+    c = load_config().replace(muscle={"eps": 0.25}, regulator={"kind": "manual"},
+                              sim={"noise_V": 0.0003})
+    assert acquire(c, out_root=tmp_path, **QUIET).status == "complete"  # live, quiet
+    stuck = acquire(c.replace(sim={"faults": {"loadcell_stuck_at_s": 1.5}}), out_root=tmp_path,
+                    **QUIET)
+    assert stuck.status == "failed" and stuck.exit_code == 1, stuck.reason
+    assert re.fullmatch(r"all 19 steps done, but the load cell read one ADC code \(0\.0146 V\) "
+                        r"from before the first pressure to the end, while the manometer's "
+                        r"reading was up to 2\.50 bar: a stuck or disconnected cell, or a muscle "
+                        r"that never pulled one ADC step \(0\.24 N\); its forces measure "
+                        r"nothing, and the force limit was blind", stuck.reason), stuck.reason
+
+
 def test_the_force_bounds_of_a_rise_hold_the_simulated_muscle(config):
     # what the stuck-cell interlock of a quiet cell takes the muscle to pull at least and at most
     # (preflight.force_bounds_N) holds the simulated FE muscle at every eps it pulls at, with
