@@ -139,12 +139,11 @@ class Acquisition:
         self._held_cell: tuple[float, float] | None = None  # (the code held [V], since [s])
         # the load cell's last code [V] and since when it has read it [s], the first sample
         # acquired under a pressure commanded or set by hand [s], and the highest plausible
-        # pressure measured
-        # [bar]: a cell on one code from before any pressure to the end, while the muscle was
-        # pressurised, measured nothing (:meth:`one_code_throughout`); so did one on one code
-        # from any time to the end while the monitor rose more than the vent threshold: the
-        # lowest plausible reading since the code was first read, and the largest rise since
-        # (rise, from, to) [bar]
+        # pressure measured [bar]: a cell on one code from before any pressure to the end,
+        # while the muscle was pressurised, measured nothing (:meth:`one_code_throughout`); so
+        # did one on one code from any time to the end while the monitor rose more than the
+        # vent threshold: the lowest plausible reading since the code was first read, and the
+        # largest rise since (rise, from, to) [bar]
         self._same_cell: tuple[float, float] | None = None
         self._same_low_bar = math.inf
         self._same_rise = (0.0, math.nan, math.nan)
