@@ -510,7 +510,7 @@ class Acquisition:
             rise_N = max(rise_N, held_N * (sure * high_bar / low_bar - 1.0))
         vented_bar = self.config.safety.vent_below_bar
         vented_bar += offset_bar + gain * vented_bar
-        peak = self._peak_at_code
+        peak = self._peak_at_code + self.monitor_low_bar  # a zero read low lowers the peak
         peak_bar = peak + offset_bar + gain * peak
         if held_N > float(np.interp(vented_bar, pressure_bar, most_N)) and peak_bar > 0:
             rise_N = max(rise_N, held_N * ((1.0 - CREEP_FRACTION) * high_bar / peak_bar - 1.0))
@@ -770,11 +770,12 @@ class Acquisition:
         step_N = self.step_N
         blind = "its forces measure nothing, and the force limit was blind"
         read = "the monitor" if self.electronic else "the manometer's reading"
+        up_to = "the monitor read" if self.electronic else "the manometer's reading was"
         if since_s <= self._pressure_from_s:
             if not self.highest_bar > below:
                 return ""
             return (f"the load cell read one ADC code ({same:.4f} V) from before the first "
-                    f"pressure to the end, while {read} was up to {self.highest_bar:.2f} "
+                    f"pressure to the end, while {up_to} up to {self.highest_bar:.2f} "
                     f"bar: a stuck or disconnected cell, or a muscle that never pulled one ADC "
                     f"step ({step_N:.2f} N); {blind}")
         rise, low, high = self._same_rise
