@@ -43,8 +43,8 @@ Safety, in every exit path:
   is written before Windows ends the process.
 
 The exit status of ``mkm acquire`` is :attr:`RunResult.exit_code`: 0 complete, 3 complete with
-lost samples, 128 + N after signal N, 2 when the run's storage failed (disk full; also after
-a complete run whose record is not whole in its folder, ``Recorder.whole``), 4 when the
+lost samples, 128 + N after signal N, 2 when the run's storage failed (disk full; also when
+the run's record is not whole in its folder, ``Recorder.whole``), 4 when the
 vent could not be verified (vent by hand; it wins over every other), 1 otherwise.
 """
 

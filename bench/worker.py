@@ -416,8 +416,8 @@ class Acquisition:
                     self._pressurised = (pressure, commanded)
         if self._peak_at_code is None and self._same_cell is not None:
             self._peak_at_code = self._peak_bar
-        set_bar = commanded if self.electronic else self.manometer_bar
-        if self._pressure_from_s is None and set_bar > 0:
+        pressure_set_bar = commanded if self.electronic else self.manometer_bar
+        if self._pressure_from_s is None and pressure_set_bar > 0:
             self._pressure_from_s = index / self.rate_hz
         if math.isfinite(force):
             (self._vent_N if phase == "vent" else self._recent_N).append(force)
