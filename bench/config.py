@@ -535,6 +535,21 @@ class BenchConfig:
                    MAX_TOLERANCE_FRACTION * reg.full_scale_bar, "bar",
                    f"a tenth of regulator.full_scale_bar={reg.full_scale_bar:g}")
         with problems.check():
+            # a load on the cell as the tare reads it, within tare_max_shift_N, is its zero: the
+            # force interlock sees what comes on top of it, so the two together must stay
+            # within the capacity the interlock guards
+            carried_N = s.force_limit_fraction * capacity + s.tare_max_shift_N
+            valid = (MIN_FORCE_LIMIT_FRACTION <= s.force_limit_fraction <= 1
+                     and 0 <= s.tare_max_shift_N <= MAX_TARE_SHIFT_FRACTION * capacity)
+            if valid and carried_N > capacity * (1 + 1e-12):  # each said alone otherwise
+                raise ValueError(
+                    f"safety.force_limit_fraction={s.force_limit_fraction:g} and "
+                    f"safety.tare_max_shift_N={s.tare_max_shift_N:g} are invalid together: a load "
+                    f"the tare takes as the zero is not seen by the force interlock, which lets "
+                    f"the load cell carry up to {carried_N:.4g} N before it trips, beyond "
+                    f"loadcell.capacity_N={capacity:g}: expected force_limit_fraction x capacity "
+                    "+ tare_max_shift_N within the capacity")
+        with problems.check():
             if reg.electronic:
                 # a vent is verified by the monitor, which may read its zero error at 0 bar: a
                 # limit within it fails the check of a vented muscle (VENT BY HAND, a false alarm)

@@ -161,12 +161,24 @@ def _limit(config, name: str, allowed) -> tuple[float, float]:
     return value, allowed(config, value)
 
 
-def limits_warning(config) -> str | None:
+#: The limits on the load cell's scatter, what a cell that fails one does, and the multiple of
+#: the cell's spread at rest below which it fails it: a hold settles under three times it
+#: (:func:`mkm.bench.sequence.settle_warning` asks for as much); a tare of 20 readings or more
+#: spreads within a sixth of it (the sample spread's relative error, 1 / sqrt(2 (n - 1))), so
+#: half as much again passes it
+SPREAD_LIMITS = {"settle.max_force_std_N": ("settles under no", 3.0),
+                 "safety.tare_max_std_N": ("passes no tare under a", 1.5)}
+
+
+def limits_warning(config, rest_std_N: float | None = None) -> str | None:
     """The message when a limit of :data:`FORCE_LIMITS` lets more than :data:`LIMIT_SHARE` of
     the force at the lowest planned step (:func:`lowest_step`) into a step's force, naming each
     such limit, its value, its share and a value to set: the share the packaged example's
     takes of its muscle's force at its lowest step. A warning, not a scaled default: a value
-    the configuration states is the one its runs use and record."""
+    the configuration states is the one its runs use and record. ``rest_std_N``: the load
+    cell's spread read at rest [N] (``mkm check``'s); a value to set of :data:`SPREAD_LIMITS`
+    below its multiple of it is one this cell cannot meet (no step would settle, or no tare
+    pass), and the message says the cell is too noisy for the muscle."""
     low_bar, force_N = lowest_step(config)
     if force_N <= 0:
         return None
@@ -177,18 +189,28 @@ def limits_warning(config) -> str | None:
         return None
     packaged = load_config()
     packaged_bar, packaged_N = lowest_step(packaged)
-    said, to_set = [], []
+    said, to_set, unmet = [], [], []
     for name, allowed, what, value, allowed_N in loose:
         share = _limit(packaged, name, allowed)[1] / packaged_N
         passes = "" if said else "passes "
         said.append(f"{name}={value:g} {passes}{percent(allowed_N / force_N)} % "
                     f"({what.format(allowed_N)})")
-        to_set.append(f"{name} to about {value * share * force_N / allowed_N:.2g}")
+        suggested = value * share * force_N / allowed_N
+        to_set.append(f"{name} to about {suggested:.2g}")
+        fails, sigmas = SPREAD_LIMITS.get(name, ("", 0.0))
+        if rest_std_N is not None and suggested < sigmas * rest_std_N:
+            floor_N = sigmas * rest_std_N
+            unmet.append(f"{fails} {name} below about {floor_N:.2g} N ({sigmas:g} times it, "
+                         f"{percent(floor_N / force_N)} % of that force)")
+    cell = (f"; but this load cell spreads {rest_std_N:.2g} N rms at rest: it "
+            f"{_listed(unmet)}, too noisy for this muscle: use a quieter or smaller cell"
+            if unmet else "")
     return (f"the settle and noise limits are sized for a stronger muscle: at its lowest step, "
             f"{low_bar:g} bar, this one pulls about {force_N:.2g} N (Equation 2 on the braid's "
             f"diameter at eps 0), and these limits pass more than {100 * LIMIT_SHARE:g} % of it "
             f"into a step: {_listed(said)}; set {_listed(to_set)} (the share the packaged "
-            f"example's take of the {packaged_N:.0f} N its muscle pulls at {packaged_bar:g} bar)")
+            f"example's take of the {packaged_N:.0f} N its muscle pulls at {packaged_bar:g} bar)"
+            f"{cell}")
 
 
 def percent(share: float) -> str:
@@ -249,6 +271,10 @@ SURE_FRACTION = 0.5
 #: Braid friction: a force held as the pressure falls reads up to this share above the static
 #: one (Davis & Caldwell 2006 report loops of several %; the simulator's play is 3 %).
 FRICTION_FRACTION = 0.1
+#: Creep: a muscle's force loses at most this share of itself as the rubber relaxes: silicone
+#: relaxes by a few % over a minute's hold (identify's
+#: :data:`~mkm.identify.procedure.UNTIMED_CREEP_FRACTION`, 3 %; the simulator's 2 %).
+CREEP_FRACTION = 0.05
 
 
 def force_bounds_N(config, n: int = 1001) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -304,8 +330,10 @@ def slack_warning(config) -> str | None:
             "pressure or with a thinner wall")
 
 
-def warnings(config) -> list[str]:
+def warnings(config, rest_std_N: float | None = None) -> list[str]:
     """Every preflight message for ``config`` (braid lock, a slack muscle, load cell, settle and
-    noise limits, practical range)."""
+    noise limits, practical range); ``rest_std_N``: the load cell's spread read at rest [N],
+    where known (:func:`limits_warning`)."""
     return [w for w in (braid_lock(config), slack_warning(config), loadcell_warning(config),
-                        limits_warning(config), practical_range_warning(config)) if w]
+                        limits_warning(config, rest_std_N), practical_range_warning(config))
+            if w]

@@ -49,6 +49,7 @@ from mkm.bench.sequence import (
     one_code_warning,
     rest_warning,
     settle_warning,
+    shift_warning,
     validate_tare,
     vented_monitor,
 )
@@ -144,7 +145,8 @@ def _read_vented(device: Backend, config: BenchConfig, seconds: float) -> np.nda
 
 
 #: the warnings of :func:`at_rest`, by their keys
-AT_REST_WARNINGS = ("settle_warning", "one_code_warning", "rest_warning", "monitor_warning")
+AT_REST_WARNINGS = ("settle_warning", "one_code_warning", "rest_warning", "shift_warning",
+                    "monitor_warning")
 
 
 def at_rest(volts: np.ndarray, config: BenchConfig) -> dict:
@@ -159,6 +161,7 @@ def at_rest(volts: np.ndarray, config: BenchConfig) -> dict:
     return {**out, "settle_warning": settle_warning(out["std_N"], config),
             "one_code_warning": one_code_warning(out, config),
             "rest_warning": rest_warning(out, config),
+            "shift_warning": shift_warning(out, config),
             "monitor_warning": monitor_zero_warning(out, config)}
 
 
@@ -624,7 +627,7 @@ def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual
         *expected_budget_lines(config),
     ]
     found = [rest[key] for key in AT_REST_WARNINGS if rest.get(key)]
-    return "\n".join(lines), [*warnings(config), *found], refusal
+    return "\n".join(lines), [*warnings(config, rest.get("std_N")), *found], refusal
 
 
 def _rest_lines(rest: dict, config: BenchConfig) -> list[str]:

@@ -122,6 +122,9 @@ class Recorder:
         self._told = 0  # failures raised to the loop (raise_failure)
         self.stuck_reason = ""  # set once the disk is found not taking the record
         self.outcome_refused = False  # the final run.json could not be written: it says running
+        # the run folder holds the whole record once finish returns: every sample in
+        # samples.csv, every file synced, the outcome in run.json
+        self.whole = False
         # when the thread last finished a write, or was given one while it had none
         self._done_at = time.monotonic()
         self._synced_at = self._done_at  # when the rows were last synced to the disk
@@ -400,19 +403,22 @@ class Recorder:
 
     def finish(self, status: RunStatus, reason: str) -> list[str]:
         """Record the outcome, sync and close every file; return the problems met (never
-        raises: the caller must still be able to say where the run is)."""
+        raises: the caller must still be able to say where the run is); :attr:`whole` says
+        whether the run folder holds the whole record."""
         self.wait_written()  # everything held, once the disk takes it
         self._put("stop")
         self._thread.join()
         problems = []
         if self.crashed:  # what it held, written here
             problems.append(self._write_rest())
+        whole = not self.held_rows
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
         self.writer.release_reserve()  # a disk that filled mid-run: the room for this record
         try:  # the rows first: run.json's outcome is written once they are on disk
             self.writer.close()
         except Exception as exc:  # noqa: BLE001 - any failure of the close: the outcome still
+            whole = False
             problems.append(f"the run's files could not all be synced ({type(exc).__name__}: "
                             f"{exc})")
         else:
@@ -429,6 +435,7 @@ class Recorder:
         except OSError as exc:
             self.outcome_refused = True
             problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
+        self.whole = whole and not self.outcome_refused
         return problems
 
     def _write_rest(self) -> str:
@@ -443,9 +450,10 @@ class Recorder:
         except BaseException as exc:  # never raises: the outcome must still be recorded
             return (f"the recorder's thread failed ({self.crashed}), and so did writing the "
                     f"{self.held_rows} samples it held ({type(exc).__name__}: {exc})")
-        left = f"; {self.kept}" if self._unwritten else ""
+        if self._unwritten:
+            return f"the recorder's thread failed ({self.crashed}), and {self.kept}"
         return (f"the recorder's thread failed ({self.crashed}): the {held} samples it held "
-                f"were written as the run ended{left}")
+                "were written as the run ended")
 
     def _save_retrying(self, books: RunMeta | None = None) -> None:
         """:meth:`save`, tried again while another program holds run.json open."""

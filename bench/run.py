@@ -43,7 +43,8 @@ Safety, in every exit path:
   is written before Windows ends the process.
 
 The exit status of ``mkm acquire`` is :attr:`RunResult.exit_code`: 0 complete, 3 complete with
-lost samples, 128 + N after signal N, 2 when the run's storage failed (disk full), 4 when the
+lost samples, 128 + N after signal N, 2 when the run's storage failed (disk full; also when
+the run's record is not whole in its folder, ``Recorder.whole``), 4 when the
 vent could not be verified (vent by hand; it wins over every other), 1 otherwise.
 """
 
@@ -1102,7 +1103,7 @@ class BenchRun:
                             "or the Task Manager, loses them)")
                 self.recorder.wait_written()
             problems.extend(self.recorder.refusals())
-            if self.recorder.stuck_reason or self.recorder.crashed:
+            if self.recorder.stuck_reason:  # the disk stopped the run
                 self.storage_failed = True
         unverified = self.vent_check is not None and not self.vent_check.verified
         if unverified:
@@ -1123,8 +1124,11 @@ class BenchRun:
             meta.manual_vent_required = unverified
             meta.vent_check = self.vent_check.as_dict() if self.vent_check else None
             for problem in self.recorder.finish(status, reason):
-                self.storage_failed = True
                 reason = f"{reason}; {problem}"
+            # a sample not in samples.csv, a file not synced, run.json not written: the record
+            # is not whole in its folder (a recorder's thread that failed, its rows all written
+            # as the run ended, left it whole: said in the reason, the status the run's)
+            self.storage_failed = self.storage_failed or not self.recorder.whole
         lease = self.lease
         hung = lease is not None and lease.lagging()  # said above: not waited for again
         refused = self.recorder is not None and self.recorder.outcome_refused

@@ -296,6 +296,25 @@ def rest_warning(tare: dict, config: BenchConfig) -> str:
             "let the muscle rest vented and tare again (or lengthen sequence.tare_s)")
 
 
+def shift_warning(tare: dict, config: BenchConfig) -> str:
+    """What a tare whose zero lies more than :data:`~mkm.bench.preflight.LIMIT_SHARE` of the
+    force at the lowest planned step (:func:`~mkm.bench.preflight.lowest_step`) from
+    ``loadcell.offset_V`` means (``safety.tare_max_shift_N``, a bound for the cell, lets it
+    pass): a load left on the cell at the tare is taken off every force, and the force limit
+    does not see it; or the configured zero is not the cell's. Or ""."""
+    low_bar, force_N = lowest_step(config)
+    shift_N, cell = tare["shift_N"], config.loadcell
+    if not abs(shift_N) > LIMIT_SHARE * force_N:
+        return ""
+    return (f"the tare's zero is {shift_N:+.2f} N from loadcell.offset_V={cell.offset_V:g} V, "
+            f"{percent(abs(shift_N) / force_N)} % of the {force_N:.2g} N the muscle pulls at the "
+            f"lowest step, {low_bar:g} bar (safety.tare_max_shift_N="
+            f"{config.safety.tare_max_shift_N:g} lets it pass): a load left on the cell at the "
+            "tare (the muscle not hanging free, a fixture resting on the cell) is taken off every "
+            "force, and the force limit does not see it; remove it and tare again, or, if the "
+            f"cell hung unloaded, set loadcell.offset_V to its zero, {tare['offset_V']:.4f} V")
+
+
 def one_code_warning(tare: dict, config: BenchConfig) -> str:
     """What a tare whose last :data:`mkm.bench.worker.STUCK_CELL_S` lay on one ADC code
     (``held_s``) after readings that strayed less than a step (else :func:`validate_tare`
@@ -422,6 +441,7 @@ class Staircase:
         self.acq.held_since_tare(held_V, intervals)
         self.acq.recorder.tare({**tare, "duration_s": self.config.sequence.tare_s})
         for warning in (one_code_warning(tare, self.config), rest_warning(tare, self.config),
+                        shift_warning(tare, self.config),
                         settle_warning(tare["std_N"], self.config),
                         monitor_zero_warning(tare, self.config)):
             if warning:

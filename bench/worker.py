@@ -52,7 +52,7 @@ from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
-from mkm.bench.preflight import FRICTION_FRACTION, adc_step_N, force_bounds_N
+from mkm.bench.preflight import CREEP_FRACTION, FRICTION_FRACTION, adc_step_N, force_bounds_N
 from mkm.bench.recorder import Recorder
 from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
@@ -138,12 +138,12 @@ class Acquisition:
         self.monitor_low_bar = 0.0
         self._held_cell: tuple[float, float] | None = None  # (the code held [V], since [s])
         # the load cell's last code [V] and since when it has read it [s], the first sample
-        # acquired under a pressure commanded [s], and the highest plausible pressure measured
-        # [bar]: a cell on one code from before any pressure to the end, while the muscle was
-        # pressurised, measured nothing (:meth:`one_code_throughout`); so did one on one code
-        # from any time to the end while the monitor rose more than the vent threshold: the
-        # lowest plausible reading since the code was first read, and the largest rise since
-        # (rise, from, to) [bar]
+        # acquired under a pressure commanded or set by hand [s], and the highest plausible
+        # pressure measured [bar]: a cell on one code from before any pressure to the end,
+        # while the muscle was pressurised, measured nothing (:meth:`one_code_throughout`); so
+        # did one on one code from any time to the end while the monitor rose more than the
+        # vent threshold: the lowest plausible reading since the code was first read, and the
+        # largest rise since (rise, from, to) [bar]
         self._same_cell: tuple[float, float] | None = None
         self._same_low_bar = math.inf
         self._same_rise = (0.0, math.nan, math.nan)
@@ -155,6 +155,12 @@ class Acquisition:
         self._last3_bar: deque = deque(maxlen=3)
         self._held_low = self._held_high = (math.nan, math.nan)
         self._force_bounds: tuple | None = None
+        # the highest plausible pressure read [bar] since the muscle was last vented (the
+        # median of the last three readings at or below safety.vent_below_bar), and that peak
+        # as the load cell's code was first read (None until it is known): unmoved_cell
+        self._vented3_bar: deque = deque(maxlen=3)
+        self._peak_bar = 0.0
+        self._peak_at_code: float | None = None
         self.unmoved = ""  # why unmoved_cell found the load cell stuck ("" while it did not)
         self.highest_bar = 0.0
         self.command_bar = 0.0
@@ -377,7 +383,16 @@ class Acquisition:
             self._same_low_bar, self._same_rise = math.inf, (0.0, math.nan, math.nan)
             self._held_low = self._held_high = (math.nan, math.nan)
             self._last3_bar.clear()  # the readings since the code was first read
-        if math.isfinite(pressure) and not (self.electronic and reg.monitor_fault(monitor_V)):
+            self._peak_at_code = None
+        plausible = math.isfinite(pressure) and not (self.electronic
+                                                     and reg.monitor_fault(monitor_V))
+        # a hand regulator's samples acquired while the operator turned it, read after the
+        # reading typed: their pressure lies anywhere between that reading and the one before,
+        # so the stuck-cell interlock of a quiet cell takes them at neither, only the peak
+        # since the vent as high as the new one
+        if plausible and phase == "operator":
+            self._peak_bar = max(self._peak_bar, pressure)
+        elif plausible:
             self._last3_bar.append(pressure)
             if len(self._last3_bar) == 3:
                 median = statistics.median(self._last3_bar)
@@ -385,6 +400,10 @@ class Acquisition:
                     self._held_low = (median, index / self.rate_hz)
                 if not median <= self._held_high[0]:
                     self._held_high = (median, index / self.rate_hz)
+            self._vented3_bar.append(pressure)
+            vented = statistics.median(self._vented3_bar) <= self.config.safety.vent_below_bar
+            self._peak_bar = pressure if vented else max(self._peak_bar, pressure)
+        if plausible:
             self._same_low_bar = min(self._same_low_bar, pressure)
             if pressure - self._same_low_bar > self._same_rise[0]:
                 self._same_rise = (pressure - self._same_low_bar, self._same_low_bar, pressure)
@@ -395,7 +414,10 @@ class Acquisition:
                 self._recent_command_bar = commanded
                 if commanded > 0:
                     self._pressurised = (pressure, commanded)
-        if self._pressure_from_s is None and commanded > 0:
+        if self._peak_at_code is None and self._same_cell is not None:
+            self._peak_at_code = self._peak_bar
+        pressure_set_bar = commanded if self.electronic else self.manometer_bar
+        if self._pressure_from_s is None and pressure_set_bar > 0:
             self._pressure_from_s = index / self.rate_hz
         if math.isfinite(force):
             (self._vent_N if phase == "vent" else self._recent_N).append(force)
@@ -457,7 +479,15 @@ class Acquisition:
           the zero drift a run allows), times the pressures' ratio less one, the braid's
           friction taken off both ends: at a fixed length the force grows at least in
           proportion to the pressure (above a threshold, none below it), and a live cell
-          that held its code read that force at the low pressure too.
+          that held its code read that force at the low pressure too;
+        - that force times the ratio of the high pressure to the highest read since the muscle
+          was last vented until the code was first read, less one, what creep may take off
+          the high end (:data:`mkm.bench.preflight.CREEP_FRACTION`) taken off: the braid's
+          friction holds a force at most at what the highest pressure since the vent pulled
+          up, so a force above the most the muscle pulls at the vent threshold was pulled up
+          to there, and a pressure above that peak pulls it up again, the friction on both
+          ends the same (a rise above the run's peak so far, as an up-sweep's; after a fall
+          only the two bounds above hold).
 
         It needs no noise at the tare, so it watches a cell quieter than a step, which
         :meth:`_stuck_cell` cannot tell from a stuck one."""
@@ -478,6 +508,12 @@ class Acquisition:
         if held_N > 0 and low_bar > 0:
             sure = (1.0 - FRICTION_FRACTION) / (1.0 + FRICTION_FRACTION)
             rise_N = max(rise_N, held_N * (sure * high_bar / low_bar - 1.0))
+        vented_bar = self.config.safety.vent_below_bar
+        vented_bar += offset_bar + gain * vented_bar
+        peak = self._peak_at_code + self.monitor_low_bar  # a zero read low lowers the peak
+        peak_bar = peak + offset_bar + gain * peak
+        if held_N > float(np.interp(vented_bar, pressure_bar, most_N)) and peak_bar > 0:
+            rise_N = max(rise_N, held_N * ((1.0 - CREEP_FRACTION) * high_bar / peak_bar - 1.0))
         if not rise_N >= UNMOVED_CELL_STEPS * step_N:
             return None
         read = "the monitor" if self.electronic else "the manometer's reading"
@@ -725,19 +761,21 @@ class Acquisition:
         later time to its end while the monitor rose by more than that, means (its forces
         from then measure nothing: no muscle that pulls more as its pressure rises, nor one
         that lets go at the vent, holds a live cell to one code; a slack one with a cell
-        quieter than a step may), or "" (a cell that moved, an electronic regulator never
-        commanded, a manual one)."""
+        quieter than a step may), or "" (a cell that moved, a regulator never commanded or
+        set to a pressure)."""
         below = self.config.safety.vent_below_bar
         if self._same_cell is None or self._pressure_from_s is None:
             return ""
         same, since_s = self._same_cell
         step_N = self.step_N
         blind = "its forces measure nothing, and the force limit was blind"
+        read = "the monitor" if self.electronic else "the manometer's reading"
+        up_to = "the monitor read" if self.electronic else "the manometer's reading was"
         if since_s <= self._pressure_from_s:
             if not self.highest_bar > below:
                 return ""
             return (f"the load cell read one ADC code ({same:.4f} V) from before the first "
-                    f"pressure to the end, while the monitor read up to {self.highest_bar:.2f} "
+                    f"pressure to the end, while {up_to} up to {self.highest_bar:.2f} "
                     f"bar: a stuck or disconnected cell, or a muscle that never pulled one ADC "
                     f"step ({step_N:.2f} N); {blind}")
         rise, low, high = self._same_rise
@@ -746,7 +784,7 @@ class Acquisition:
         force_N = (same - self.tare_offset_V) * self.cell.sensitivity_N_per_V
         return (f"the load cell read one ADC code ({same:.4f} V, {force_N:+.2f} N) from "
                 f"{since_s:g} s to the end, the vent included, "
-                f"while the monitor rose from {low:.2f} to {high:.2f} bar: a stuck or "
+                f"while {read} rose from {low:.2f} to {high:.2f} bar: a stuck or "
                 f"disconnected cell, or a muscle that pulled not one ADC step ({step_N:.2f} N) "
                 f"more as its pressure rose; from {since_s:g} s {blind}")
 

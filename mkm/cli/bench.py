@@ -271,7 +271,7 @@ def _said(args, result, simulated: str, eps: float | None = None) -> None:
 
 def _tare(args) -> int:
     from mkm.bench.backend import BenchError  # here: the bench loads pandas
-    from mkm.bench.procedures import tare
+    from mkm.bench.procedures import AT_REST_WARNINGS, tare
 
     try:
         out = tare(_hardware_config(args, "tare"), clock=args.clock, seconds=args.seconds)
@@ -283,9 +283,7 @@ def _tare(args) -> int:
     if out.get("monitor_vented_settled"):
         print(f"pressure monitor {out['monitor_vented_bar']:+.4f} bar vented "
               f"(+-{out['monitor_vented_se_bar']:.1g} bar standard error)")
-    for warning in filter(None, (out["one_code_warning"], out["rest_warning"],
-                                 out["settle_warning"],
-                                 out["monitor_warning"])):
+    for warning in filter(None, (out[key] for key in AT_REST_WARNINGS)):
         print(f"mkm tare: warning: {warning}", file=sys.stderr)
     return 0
 

@@ -368,6 +368,28 @@ def test_a_monitor_without_a_live_zero_is_refused_on_a_real_bench(tmp_path, mkm_
     assert live.regulator.monitor_V_at_zero == 1.0
 
 
+def test_a_force_limit_and_tare_shift_beyond_the_capacity_together_are_refused(tmp_path,
+                                                                                 mkm_cli):
+    # force_limit_fraction 0.98 and tare_max_shift_N 100 on the packaged 1961 N cell, each
+    # within its bounds: a 100 N load on the cell as the tare read it is its zero, and the
+    # force interlock let it carry 1922 + 100 N before tripping, 2022 N, beyond its capacity
+    config = tmp_path / "bench.toml"
+    config.write_text(load_config().effective_text().replace(
+        "force_limit_fraction = 0.9", "force_limit_fraction = 0.98"), encoding="utf-8")
+    code, out, err = mkm_cli(["check", "--config", str(config)])
+    assert code == 2 and out == ""
+    assert err.splitlines() == [
+        f"mkm check: error: config {config}: safety.force_limit_fraction=0.98 and "
+        "safety.tare_max_shift_N=100 are invalid together: a load the tare takes as the zero is "
+        "not seen by the force interlock, which lets the load cell carry up to 2022 N before it "
+        "trips, beyond loadcell.capacity_N=1961.33: expected force_limit_fraction x capacity + "
+        "tare_max_shift_N within the capacity"]
+    # 0.949 x 1961.33 + 100 = 1961.3 N: within
+    config.write_text(load_config().effective_text().replace(
+        "force_limit_fraction = 0.9", "force_limit_fraction = 0.949"), encoding="utf-8")
+    assert mkm_cli(["check", "--config", str(config)])[0] == 0
+
+
 def test_every_bad_value_is_named_at_once(tmp_path, mkm_cli):
     """A 490 N load cell failed on safety.tare_max_std_N (5 N, above 1 % of 490 N), and once
     that was mended on tare_max_shift_N (100 N, above 10 %): every bad value is named in one

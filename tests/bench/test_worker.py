@@ -350,7 +350,8 @@ def test_an_interlock_vents_before_its_block_is_written(config, tmp_path, monkey
 def test_a_disk_that_fails_the_tripping_block_keeps_the_interlocks_reason(config, tmp_path,
                                                                             monkeypatch):
     # the NaN sample's block cannot be written (disk full): the run still vents first and says
-    # the interlock, then the disk, not a bare "recording failed"
+    # the interlock, then the disk, not a bare "recording failed"; samples 50 on are kept
+    # outside the run folder, whose record is not whole: exit 2, a failed disk's
     from mkm.bench.storage import RunWriter
 
     events = _order_of_writes(monkeypatch)
@@ -363,7 +364,7 @@ def test_a_disk_that_fails_the_tripping_block_keeps_the_interlocks_reason(config
 
     monkeypatch.setattr(RunWriter, "append_samples", full_at_50)
     result, run = record(config, tmp_path, nan_force_at_s=5.0)
-    assert result.status == "aborted" and result.exit_code == 1
+    assert result.status == "aborted" and result.exit_code == 2
     assert result.reason.startswith("force interlock: the force reading is not a number")
     assert "; vented; the disk refused samples 50 (OSError: [Errno 28] No space left on " \
            "device), and " in result.reason
