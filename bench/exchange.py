@@ -134,6 +134,12 @@ ZERO_LIMITS = {"--tare": (-MAX_CAPACITY_N, MAX_CAPACITY_N,
 #: ambient 0.5-1.05 bar): the data cannot tell these apart, and a pressure column is a gauge
 #: pressure, so its readings are kept and the option that says otherwise is named
 VENTED_AUTO_MAX_BAR = INSTRUMENT_BOUNDS["monitor_offset_bar"][1]
+#: what an absolute sensor reads vented [bar]: the atmosphere from a high-pressure day at sea
+#: level (1.05 bar) to a lab 4000 m up (0.62 bar). A record held within it at its start, its
+#: lowest level, that ends there too is refused unless ``--vented`` says which it is: read as
+#: gauge, a muscle tared nowhere pulls from the atmosphere up, and identify then blames its
+#: length
+ATMOSPHERE_BAR = (0.6, 1.1)
 
 
 #: a pressure sensor's zero error where a table declares no pressure accuracy, as a fraction of
@@ -910,6 +916,24 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
             "that did not come back; every step keeps the start's zero"]
 
 
+def _refuse_atmosphere(group: _Group, pressure_bar: np.ndarray, held_bar: float):
+    """Refuse a record held at an atmosphere's reading (:data:`ATMOSPHERE_BAR`) at its start
+    (its lowest level) that ends there too: an absolute sensor's, or a muscle kept pressurised
+    throughout, which its pressures cannot tell apart."""
+    low, high = ATMOSPHERE_BAR
+    # its last samples, not a closing rest: a record may stop as the ramp comes down
+    end_bar = float(np.median(pressure_bar[-series.RECORD_PLATEAU_ROWS:]))
+    if not low <= held_bar <= high or abs(end_bar - held_bar) > series.PLATEAU_TOLERANCE_BAR:
+        return
+    header = group.columns["pressure"].header
+    raise ValueError(f"{group.named}: the record starts and ends held at {held_bar:.3f} bar "
+                     f"({header!r}) and reads no lower: the atmosphere an absolute sensor "
+                     f"reads vented ({low:g}-{high:g} bar), or a muscle kept pressurised from "
+                     "start to end, which the pressures cannot tell apart: expected --vented "
+                     f"{held_bar:.3f}bar (an absolute sensor: subtracted, the force tared at "
+                     "the rest) or --vented none (a gauge: kept as read)")
+
+
 def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
            override=None, force_sign=1, one_step_per_row=False):
     """The run record, steps, samples, notes and shape of one muscle state (``override``: what
@@ -958,6 +982,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             held = handling["held_at_start_bar"] = offset
             offset = 0.0
             unit = found["pressure"].unit
+            if not marked_gauge(unit):
+                _refuse_atmosphere(group, pressure, held)
             notes.append(f"the record starts held at {held:.3g} bar, more than a gauge's zero "
                          f"error ({VENTED_AUTO_MAX_BAR:g} bar): kept as the gauge pressure "
                          + (f"its unit {unit!r} says (the muscle pressurised when the logging "
