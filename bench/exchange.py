@@ -916,6 +916,12 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
             "that did not come back; every step keeps the start's zero"]
 
 
+def _never_rises(pressure_bar: np.ndarray) -> bool:
+    """Whether a record's pressures stay within two plateau bands: a vented gauge's noise, or
+    one hold; no steps to find."""
+    return bool(np.ptp(pressure_bar) <= 2 * series.PLATEAU_TOLERANCE_BAR)
+
+
 def _refuse_atmosphere(group: _Group, pressure_bar: np.ndarray, held_bar: float):
     """Refuse a record held at an atmosphere's reading (:data:`ATMOSPHERE_BAR`) at its start
     (its lowest level) that ends there too: an absolute sensor's, or a muscle kept pressurised
@@ -923,7 +929,8 @@ def _refuse_atmosphere(group: _Group, pressure_bar: np.ndarray, held_bar: float)
     low, high = ATMOSPHERE_BAR
     # its last samples, not a closing rest: a record may stop as the ramp comes down
     end_bar = float(np.median(pressure_bar[-series.RECORD_PLATEAU_ROWS:]))
-    if not low <= held_bar <= high or abs(end_bar - held_bar) > series.PLATEAU_TOLERANCE_BAR:
+    if (not low <= held_bar <= high or abs(end_bar - held_bar) > series.PLATEAU_TOLERANCE_BAR
+            or _never_rises(pressure_bar)):  # one hold: said as such below
         return
     header = group.columns["pressure"].header
     raise ValueError(f"{group.named}: the record starts and ends held at {held_bar:.3f} bar "
@@ -1060,12 +1067,21 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         except ValueError as exc:  # beyond any gauge: a unit read as bar, as the note says
             raise ValueError(f"{exc}; {_other_pressure_units(top_bar, found['pressure'].unit)}"
                              ) from None
-    if (timed or record) and np.ptp(pressure) <= 2 * series.PLATEAU_TOLERANCE_BAR:
+    if (timed or record) and _never_rises(pressure):
         # a gauge's noise binned by pressure would make steps of nothing
         what = "samples" if timed else "rows"
-        raise ValueError(f"{group.named}: the pressure never rises: its {pressure.size} {what} "
-                         f"read {pressure.min():.3g} to {pressure.max():.3g} bar, within "
-                         f"{2 * series.PLATEAU_TOLERANCE_BAR:g} bar of each other (a vented "
+        read = pressure + handling.get("vented_reading_bar", 0.0)  # as the file holds them
+        level = float(np.median(read))
+        span = (f"its {pressure.size} {what} read {read.min():.3g} to {read.max():.3g} bar, "
+                f"within {2 * series.PLATEAU_TOLERANCE_BAR:g} bar of each other")
+        if level > 2 * series.PLATEAU_TOLERANCE_BAR:  # a hold, not a vented gauge
+            raise ValueError(f"{group.named}: the pressure is held at {level:.3g} bar "
+                             f"throughout ({span}): one hold, no sweep to find steps in: "
+                             "expected a record of the pressure rising; where each pressure "
+                             "step was logged to a file of its own, import them as one table: "
+                             "a row per step (its pressure and force, and direction up or "
+                             "down), or the files one after another, their times continuing")
+        raise ValueError(f"{group.named}: the pressure never rises: {span} (a vented "
                          f"gauge's noise): expected a record of the muscle pressurised; is "
                          f"{found['pressure'].header!r} its pressure?")
     closing = closing_rows = None

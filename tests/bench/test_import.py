@@ -2554,6 +2554,35 @@ def test_a_record_whose_pressure_never_rises_is_refused(tmp_path, mkm_cli):
             "the muscle pressurised; is 'Pressure [bar]' its pressure?" in err)
     assert not (tmp_path / "runs").exists()
 
+
+@pytest.mark.parametrize("level_bar", [2.0, 1.0, 0.4])
+def test_a_file_of_one_held_step_is_named_a_hold(level_bar, tmp_path, mkm_cli):
+    # a lab that logs one file per pressure step, 20 s at 10 Hz held at its step: was "the
+    # pressure never rises ... (a vented gauge's noise)" of a muscle held at 2 bar; at 1 bar an
+    # absolute sensor's atmosphere; at 0.4 bar the hold was taken for a vented reading
+    rng = np.random.default_rng(8)
+    t = np.arange(0.0, 20.0, 0.1)
+    table = tmp_path / "LM8_step04.csv"
+    table.write_text("# Soft Robotics Lab, hand-made latex muscle LM-8 #3\n"
+                     "# set pressure 2.0 bar (up), logged 20 s after 10 s settling\n"
+                     + pd.DataFrame({"Temp [degC]": 22.4 + rng.normal(0, 0.05, t.size),
+                                     "Force [N]": 35.0 + rng.normal(0, 0.05, t.size),
+                                     "Time [s]": t,
+                                     "Pressure [kPa]": 100 * (level_bar + rng.normal(
+                                         0, 0.003, t.size))}).to_csv(index=False))
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    # the median of 200 samples of 3 mbar noise: within a millibar at 3 digits
+    assert f"LM8_step04.csv: the pressure is held at {level_bar:.3g} bar throughout" in err
+    assert ("within 0.06 bar of each other): one hold, no sweep to find steps in: expected a "
+            "record of the pressure rising; where each pressure step was logged to a file of "
+            "its own, import them as one table: a row per step (its pressure and force, and "
+            "direction up or down), or the files one after another, their times continuing"
+            ) in err
+    assert not (tmp_path / "runs").exists()
+
+
 def test_a_second_session_appended_under_its_own_header_is_named_as_such(tmp_path, mkm_cli):
     # a logger that appends each session to one file, its header repeated: was "cell B42:
     # 'Pressure [bar]' is not a number"
