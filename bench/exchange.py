@@ -1080,7 +1080,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              "expected a record of the pressure rising; where each pressure "
                              "step was logged to a file of its own, import them as one table: "
                              "a row per step (its pressure and force, and direction up or "
-                             "down), or the files one after another, their times continuing")
+                             "down), or the files one after another on the clock they were "
+                             "logged by (a hold's creep is timed from its step)")
         raise ValueError(f"{group.named}: the pressure never rises: {span} (a vented "
                          f"gauge's noise): expected a record of the muscle pressurised; is "
                          f"{found['pressure'].header!r} its pressure?")

@@ -2578,8 +2578,8 @@ def test_a_file_of_one_held_step_is_named_a_hold(level_bar, tmp_path, mkm_cli):
     assert ("within 0.06 bar of each other): one hold, no sweep to find steps in: expected a "
             "record of the pressure rising; where each pressure step was logged to a file of "
             "its own, import them as one table: a row per step (its pressure and force, and "
-            "direction up or down), or the files one after another, their times continuing"
-            ) in err
+            "direction up or down), or the files one after another on the clock they were logged "
+            "by (a hold's creep is timed from its step)") in err
     assert not (tmp_path / "runs").exists()
 
 

@@ -557,6 +557,11 @@ def test_a_held_out_fit_the_model_cannot_predict_is_a_note_not_a_crash(muscle, m
     assert "no valid force" in result.checks[0]["heldout_failed"]
     note = next(n for n in result.notes if n.startswith("held out, "))
     assert "could not be predicted from the other runs" in note and "gap_mm=5" in note
+    # its steps are there: said as the failed fit, not as a branch without a step
+    first = result.summary().splitlines()[2]
+    assert first.endswith(f"{result.checks[0]['run']} (eps {result.checks[0]['eps']:g}, L0 "
+                          f"{result.checks[0]['L0_mm']:g} mm): not predicted: the fit to the "
+                          "other runs failed (the note below)"), first
 
 
 @pytest.mark.parametrize(("accuracy", "bound"), [
