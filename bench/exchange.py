@@ -294,7 +294,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         or this value.
     vented : "auto", "none" or float
         The pressure read vented [bar], subtracted from a time series' pressures: detected
-        (``auto``), none, or this value.
+        (``auto``), none, or this value (subtracted from a step table's too).
     select : str, optional
         The muscle to import where the table's muscle column holds several.
     accuracy : dict, optional
@@ -503,15 +503,6 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                              f"{prepared[0].table.name}'s {role} column "
                              f"{prepared[0].columns[role].header!r} is not logged in "
                              f"{scale.reads}: expected it only for {scale.channel}")
-    untimed = [r.table.name for r in prepared if "time" not in r.columns
-               and not series.sampled_without_time(r.values("pressure"))]
-    if (untimed or one_step_per_row) and not isinstance(vented, str):
-        # a value given: it would be ignored unsaid
-        why = ("--one-step-per-row reads a step table" if one_step_per_row else
-               f"{untimed[0]} has no time column")
-        raise ValueError(f"--vented {vented:g} bar: {why}: expected --vented with a time "
-                         "series only (its first samples read vented); a step table's "
-                         "pressures are imported as they are")
     groups = []
     for recognition in prepared:
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
@@ -922,18 +913,16 @@ def _never_rises(pressure_bar: np.ndarray) -> bool:
     return bool(np.ptp(pressure_bar) <= 2 * series.PLATEAU_TOLERANCE_BAR)
 
 
-def _refuse_atmosphere(group: _Group, pressure_bar: np.ndarray, held_bar: float):
-    """Refuse a record held at an atmosphere's reading (:data:`ATMOSPHERE_BAR`) at its start
-    (its lowest level) that ends there too: an absolute sensor's, or a muscle kept pressurised
-    throughout, which its pressures cannot tell apart."""
+def _refuse_atmosphere(group: _Group, held_bar: float, end_bar: float, what: str):
+    """Refuse a ``what`` (a record, a table) that starts at an atmosphere's reading
+    (:data:`ATMOSPHERE_BAR`), its lowest level, and ends there too (``end_bar``): an absolute
+    sensor's, or a muscle kept pressurised throughout, which its pressures cannot tell
+    apart."""
     low, high = ATMOSPHERE_BAR
-    # its last samples, not a closing rest: a record may stop as the ramp comes down
-    end_bar = float(np.median(pressure_bar[-series.RECORD_PLATEAU_ROWS:]))
-    if (not low <= held_bar <= high or abs(end_bar - held_bar) > series.PLATEAU_TOLERANCE_BAR
-            or _never_rises(pressure_bar)):  # one hold: said as such below
+    if not low <= held_bar <= high or abs(end_bar - held_bar) > series.PLATEAU_TOLERANCE_BAR:
         return
     header = group.columns["pressure"].header
-    raise ValueError(f"{group.named}: the record starts and ends held at {held_bar:.3f} bar "
+    raise ValueError(f"{group.named}: the {what} starts and ends held at {held_bar:.3f} bar "
                      f"({header!r}) and reads no lower: the atmosphere an absolute sensor "
                      f"reads vented ({low:g}-{high:g} bar), or a muscle kept pressurised from "
                      "start to end, which the pressures cannot tell apart: expected --vented "
@@ -989,8 +978,10 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             held = handling["held_at_start_bar"] = offset
             offset = 0.0
             unit = found["pressure"].unit
-            if not marked_gauge(unit):
-                _refuse_atmosphere(group, pressure, held)
+            if not (marked_gauge(unit) or _never_rises(pressure)):  # one hold: said below
+                # its last samples, not a closing rest: a record may stop as a ramp comes down
+                _refuse_atmosphere(group, held, float(np.median(
+                    pressure[-series.RECORD_PLATEAU_ROWS:])), "record")
             notes.append(f"the record starts held at {held:.3g} bar, more than a gauge's zero "
                          f"error ({VENTED_AUTO_MAX_BAR:g} bar): kept as the gauge pressure "
                          + (f"its unit {unit!r} says (the muscle pressurised when the logging "
@@ -1020,9 +1011,17 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              f"if {found['time'].header!r} is in milliseconds, import again "
                              "with --units time=ms"))
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
-    # -0.0001 bar too); a step table's pressures are as written, no vented reading subtracted,
-    # so its vented rows read the gauge's zero error, taken as 0 bar up to its bound
+    # -0.0001 bar too); a step table's pressures are as written (less a --vented given), so
+    # its vented rows read the gauge's zero error, taken as 0 bar up to its bound
     step_table = not (timed or record)
+    if step_table and not isinstance(vented, str):  # an absolute sensor's table
+        pressure = pressure - vented
+        handling["vented_reading_bar"], handling["vented"] = float(vented), "given"
+        notes.append(f"vented reading {vented:.3g} bar given: subtracted")
+    elif (step_table and vented == "auto" and pressure.size > 1
+          and not marked_gauge(found["pressure"].unit)
+          and pressure[0] <= pressure.min() + series.PLATEAU_TOLERANCE_BAR):
+        _refuse_atmosphere(group, float(pressure[0]), float(pressure[-1]), "table")
     below = _below_zero_bound(pressure, accuracy.get("pressure")) if step_table else None
     noise = (pressure < 0) & (pressure >= -(below[0] if below else
                                             series.PLATEAU_TOLERANCE_BAR))
