@@ -1681,10 +1681,11 @@ def test_a_fine_step_table_of_many_rows_keeps_one_step_per_row_when_told(tmp_pat
     (table,), _ = _import(mkm_cli, timed, *MUSCLE, "--eps", "0", "--one-step-per-row")
     assert table.meta.imported_from["shape"] == "steps" and len(table.steps) == fine.size
     np.testing.assert_allclose(table.steps["start_s"], 0.5 * np.arange(fine.size))
-    # a vented reading given would be ignored: refused
-    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--one-step-per-row",
-                            "--vented", "0.1", "--out", str(tmp_path / "refused")])
-    assert code == 2 and err.count("\n") == 1 and "--vented 0.1 bar: --one-step-per-row" in err
+    # a vented reading given is subtracted from each row's pressure, as from a time series'
+    (shifted,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--one-step-per-row",
+                              "--vented", "0.02")
+    assert "vented reading 0.02 bar given: subtracted" in err
+    assert shifted.steps["pressure_bar_mean"].max() == pytest.approx(2.98, abs=1e-9)
     code, out, _ = mkm_cli(["import", "--help"])
     assert code == 0 and "--one-step-per-row" in out
 
