@@ -134,6 +134,12 @@ ZERO_LIMITS = {"--tare": (-MAX_CAPACITY_N, MAX_CAPACITY_N,
 #: ambient 0.5-1.05 bar): the data cannot tell these apart, and a pressure column is a gauge
 #: pressure, so its readings are kept and the option that says otherwise is named
 VENTED_AUTO_MAX_BAR = INSTRUMENT_BOUNDS["monitor_offset_bar"][1]
+#: what an absolute sensor reads vented [bar]: the atmosphere from a high-pressure day at sea
+#: level (1.05 bar) to a lab 4000 m up (0.62 bar). A record held within it at its start, its
+#: lowest level, that ends there too is refused unless ``--vented`` says which it is: read as
+#: gauge, a muscle tared nowhere pulls from the atmosphere up, and identify then blames its
+#: length
+ATMOSPHERE_BAR = (0.6, 1.1)
 
 
 #: a pressure sensor's zero error where a table declares no pressure accuracy, as a fraction of
@@ -288,7 +294,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         or this value.
     vented : "auto", "none" or float
         The pressure read vented [bar], subtracted from a time series' pressures: detected
-        (``auto``), none, or this value.
+        (``auto``), none, or this value (subtracted from a step table's too).
     select : str, optional
         The muscle to import where the table's muscle column holds several.
     accuracy : dict, optional
@@ -497,15 +503,6 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                              f"{prepared[0].table.name}'s {role} column "
                              f"{prepared[0].columns[role].header!r} is not logged in "
                              f"{scale.reads}: expected it only for {scale.channel}")
-    untimed = [r.table.name for r in prepared if "time" not in r.columns
-               and not series.sampled_without_time(r.values("pressure"))]
-    if (untimed or one_step_per_row) and not isinstance(vented, str):
-        # a value given: it would be ignored unsaid
-        why = ("--one-step-per-row reads a step table" if one_step_per_row else
-               f"{untimed[0]} has no time column")
-        raise ValueError(f"--vented {vented:g} bar: {why}: expected --vented with a time "
-                         "series only (its first samples read vented); a step table's "
-                         "pressures are imported as they are")
     groups = []
     for recognition in prepared:
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
@@ -910,6 +907,29 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
             "that did not come back; every step keeps the start's zero"]
 
 
+def _never_rises(pressure_bar: np.ndarray) -> bool:
+    """Whether a record's pressures stay within two plateau bands: a vented gauge's noise, or
+    one hold; no steps to find."""
+    return bool(np.ptp(pressure_bar) <= 2 * series.PLATEAU_TOLERANCE_BAR)
+
+
+def _refuse_atmosphere(group: _Group, held_bar: float, end_bar: float, what: str):
+    """Refuse a ``what`` (a record, a table) that starts at an atmosphere's reading
+    (:data:`ATMOSPHERE_BAR`), its lowest level, and ends there too (``end_bar``): an absolute
+    sensor's, or a muscle kept pressurised throughout, which its pressures cannot tell
+    apart."""
+    low, high = ATMOSPHERE_BAR
+    if not low <= held_bar <= high or abs(end_bar - held_bar) > series.PLATEAU_TOLERANCE_BAR:
+        return
+    header = group.columns["pressure"].header
+    raise ValueError(f"{group.named}: the {what} starts and ends held at {held_bar:.3f} bar "
+                     f"({header!r}) and reads no lower: the atmosphere an absolute sensor "
+                     f"reads vented ({low:g}-{high:g} bar), or a muscle kept pressurised from "
+                     "start to end, which the pressures cannot tell apart: expected --vented "
+                     f"{held_bar:.3f}bar (an absolute sensor: subtracted, the force tared at "
+                     "the rest) or --vented none (a gauge: kept as read)")
+
+
 def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
            override=None, force_sign=1, one_step_per_row=False):
     """The run record, steps, samples, notes and shape of one muscle state (``override``: what
@@ -958,6 +978,10 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             held = handling["held_at_start_bar"] = offset
             offset = 0.0
             unit = found["pressure"].unit
+            if not (marked_gauge(unit) or _never_rises(pressure)):  # one hold: said below
+                # its last samples, not a closing rest: a record may stop as a ramp comes down
+                _refuse_atmosphere(group, held, float(np.median(
+                    pressure[-series.RECORD_PLATEAU_ROWS:])), "record")
             notes.append(f"the record starts held at {held:.3g} bar, more than a gauge's zero "
                          f"error ({VENTED_AUTO_MAX_BAR:g} bar): kept as the gauge pressure "
                          + (f"its unit {unit!r} says (the muscle pressurised when the logging "
@@ -987,9 +1011,17 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              f"if {found['time'].header!r} is in milliseconds, import again "
                              "with --units time=ms"))
     # a gauge's noise around its vented zero is not a vacuum (a bench run's vented step reads
-    # -0.0001 bar too); a step table's pressures are as written, no vented reading subtracted,
-    # so its vented rows read the gauge's zero error, taken as 0 bar up to its bound
+    # -0.0001 bar too); a step table's pressures are as written (less a --vented given), so
+    # its vented rows read the gauge's zero error, taken as 0 bar up to its bound
     step_table = not (timed or record)
+    if step_table and not isinstance(vented, str):  # an absolute sensor's table
+        pressure = pressure - vented
+        handling["vented_reading_bar"], handling["vented"] = float(vented), "given"
+        notes.append(f"vented reading {vented:.3g} bar given: subtracted")
+    elif (step_table and vented == "auto" and pressure.size > 1
+          and not marked_gauge(found["pressure"].unit)
+          and pressure[0] <= pressure.min() + series.PLATEAU_TOLERANCE_BAR):
+        _refuse_atmosphere(group, float(pressure[0]), float(pressure[-1]), "table")
     below = _below_zero_bound(pressure, accuracy.get("pressure")) if step_table else None
     noise = (pressure < 0) & (pressure >= -(below[0] if below else
                                             series.PLATEAU_TOLERANCE_BAR))
@@ -1034,12 +1066,22 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         except ValueError as exc:  # beyond any gauge: a unit read as bar, as the note says
             raise ValueError(f"{exc}; {_other_pressure_units(top_bar, found['pressure'].unit)}"
                              ) from None
-    if (timed or record) and np.ptp(pressure) <= 2 * series.PLATEAU_TOLERANCE_BAR:
+    if (timed or record) and _never_rises(pressure):
         # a gauge's noise binned by pressure would make steps of nothing
         what = "samples" if timed else "rows"
-        raise ValueError(f"{group.named}: the pressure never rises: its {pressure.size} {what} "
-                         f"read {pressure.min():.3g} to {pressure.max():.3g} bar, within "
-                         f"{2 * series.PLATEAU_TOLERANCE_BAR:g} bar of each other (a vented "
+        read = pressure + handling.get("vented_reading_bar", 0.0)  # as the file holds them
+        level = float(np.median(read))
+        span = (f"its {pressure.size} {what} read {read.min():.3g} to {read.max():.3g} bar, "
+                f"within {2 * series.PLATEAU_TOLERANCE_BAR:g} bar of each other")
+        if level > 2 * series.PLATEAU_TOLERANCE_BAR:  # a hold, not a vented gauge
+            raise ValueError(f"{group.named}: the pressure is held at {level:.3g} bar "
+                             f"throughout ({span}): one hold, no sweep to find steps in: "
+                             "expected a record of the pressure rising; where each pressure "
+                             "step was logged to a file of its own, import them as one table: "
+                             "a row per step (its pressure and force, and direction up or "
+                             "down), or the files one after another on the clock they were "
+                             "logged by (a hold's creep is timed from its step)")
+        raise ValueError(f"{group.named}: the pressure never rises: {span} (a vented "
                          f"gauge's noise): expected a record of the muscle pressurised; is "
                          f"{found['pressure'].header!r} its pressure?")
     closing = closing_rows = None

@@ -154,27 +154,32 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
     if command is None:
         misfit = (fit or {}).get("misfit") or {}
         where = "on this run" + (" with the others" if len(identified) > 1 else "")
+        found = {p.get("parameter"): p.get("value") for p in (fit or {}).get("parameters", [])
+                 if p.get("status") == "fitted"}
+        terms = [f"{what} {100 * float(found[key]):.1f} %" for key, what in
+                 (("hysteresis_fraction", "braid friction"), ("creep_fraction", "creep"))
+                 if found.get(key)]
+        models = list(models)
+        rung = ("the friction rung of this report has them" if any(map(_is_friction, models))
+                else "add the rung that has them: --models "
+                + (",".join([*models, "friction"]) if models else "friction,..."))
         if misfit and not misfit.get("judged"):
-            # a table's fit: no noise to judge it by, so no misfit to blame the distance on
+            # a table's fit: no noise to judge it by, so no misfit to blame the distance on;
+            # what it fitted beyond the static force is no miss of the identified model
+            lacks = (f"the {' and '.join(terms)} identified with it, which these static models "
+                     f"lack, {'is' if len(terms) == 1 else 'are'} part of this distance "
+                     f"({rung}), the rest" if terms else
+                     "this distance")
             return (f"although the calibration{name} was identified {where}: identify could not "
-                    "judge that fit (the runs show no noise to judge it by), and this distance "
-                    "is the identified model's own miss: weigh it against the instruments' "
+                    f"judge that fit (the runs show no noise to judge it by), and {lacks} is the "
+                    "identified model's own miss: weigh it against the instruments' "
                     "accuracy (mkm import --accuracy force=...,pressure=... lets identify and "
                     "the report judge it)")
         if misfit.get("judged") and not misfit.get("misfit_branches"):
-            found = {p.get("parameter"): p.get("value") for p in fit.get("parameters", [])
-                     if p.get("status") == "fitted"}
-            terms = [f"{what} {100 * float(found[key]):.1f} %" for key, what in
-                     (("hysteresis_fraction", "braid friction"), ("creep_fraction", "creep"))
-                     if found.get(key)]
             lacks = (f"the {' and '.join(terms)} identified with it, which these static models "
                      "lack, are that distance" if terms else "these static models lack the "
                      "identified model's friction and creep")
             fits = "them within their" if len(identified) > 1 else "it within its"
-            models = list(models)
-            rung = ("the friction rung of this report has them" if any(map(_is_friction, models))
-                    else "add the rung that has them: --models "
-                    + (",".join([*models, "friction"]) if models else "friction,..."))
             return (f"although the calibration{name} was identified {where} and fits {fits} "
                     f"noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
                     f"{lacks} ({rung}; identify's steps.csv has the steps predicted with them)")

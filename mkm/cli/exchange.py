@@ -115,8 +115,10 @@ def register(subparsers) -> None:
                      help="what the pressure reads vented, subtracted from a time series (or a "
                      "record without its time): "
                      "detected at its start (auto, the default: up to a sensor's zero error; a "
-                     "record held higher is kept, pressurised), none, or a value [bar] (or "
-                     "with its unit: 1013mbar)")
+                     "record held higher is kept, pressurised; one, or a step table, at an "
+                     "atmosphere, 0.6-1.1 bar, at its start and its end is refused: an absolute "
+                     "sensor's or not, this option says), none, or a value [bar] (or with its "
+                     "unit: 1013mbar; subtracted from a step table's pressures too)")
     imp.add_argument("--force-sign", type=int, default=1, metavar="SIGN",
                      action=derived_help(_force_sign_help))
     imp.add_argument("--one-step-per-row", action=derived_help(_one_step_per_row_help,

@@ -1116,6 +1116,21 @@ def _identifiability(runs, best, boot) -> list[str]:
             notes.append(f"theta0 and the rubber are partly confounded by runs at one eps "
                          f"({eps[0]:g}; correlation {corr:+.2f}): a run at a second eps "
                          "separates them")
+        elif len(eps) > 1 and abs(corr) > CONFOUNDED and (wide["theta0_deg"] or
+                                                          wide["rubber_scale"]):
+            # a second eps separates them unless another parameter fitted trades against both
+            # (a wall fitted with them: its own notes follow)
+            others = [n for k, n in enumerate(names) if n not in ("theta0_deg", "rubber_scale")
+                      and abs(boot["correlation"][i, k]) > CONFOUNDED
+                      and abs(boot["correlation"][j, k]) > CONFOUNDED]
+            widened = " and ".join(n for n in ("theta0_deg", "rubber_scale") if wide[n])
+            notes.append(f"theta0 and the rubber are not separated by the runs at eps "
+                         f"{', '.join(f'{e:g}' for e in eps)} (correlation {corr:+.2f})"
+                         + (f": {' and '.join(others)}, fitted with them, trades against both, "
+                            f"so the interval of {widened} is wide; where "
+                            f"{' and '.join(others)} is known, leave it out of --params"
+                            if others else f": the interval of {widened} is wide because of "
+                            "it"))
         elif len(eps) > 1:
             notes.append(f"theta0 and the rubber are separated by the runs at eps "
                          f"{', '.join(f'{e:g}' for e in eps)} (correlation {corr:+.2f})")

@@ -384,9 +384,13 @@ class Identification:
         if len(held):
             lines.append("  predictive error, each run predicted from the others "
                          "(largest |Err%| rising/falling):")
+            # a run whose held-out fit failed has its steps: no branch is missing
+            failed = {c["run"] for c in self.checks if "heldout_failed" in c}
             for row in held.to_dict(orient="records"):
                 text = (f"    {row['run']} (eps {row['eps']:g}, L0 {row['L0_mm']:g} mm): "
-                        f"{_branches(row['heldout_rising_pct'], row['heldout_falling_pct'])}")
+                        + ("not predicted: the fit to the other runs failed (the note below)"
+                           if row["run"] in failed else
+                           _branches(row["heldout_rising_pct"], row["heldout_falling_pct"])))
                 if "length_heldout_rising_pct" in row and np.isfinite(
                         row["length_heldout_rising_pct"]):
                     text += ("; its length held out "

@@ -482,19 +482,42 @@ def test_a_step_tables_row_within_a_gauges_zero_error_below_zero_is_vented(tmp_p
     assert load_run(out.strip()).steps["pressure_bar_mean"].tolist() == [0.0, 1.0, 2.0]
 
 
-def test_vented_given_for_a_step_table_is_refused_not_ignored(tmp_path, capsys):
+def test_vented_given_for_a_step_table_is_subtracted(tmp_path, capsys):
     # was: --vented 50mbar accepted and ignored (a step table's pressures are imported as they
-    # are), and a pressure below 0 in a step table advised "--vented sets a vented reading to
-    # subtract", which does nothing there
+    # are), then refused: an absolute sensor's step table, 1.013 bar at its 0 bar rows, had no
+    # way to its gauge pressures; and a pressure below 0 in a step table advised "--vented sets
+    # a vented reading to subtract", which does nothing there
     table = tmp_path / "steps.csv"
     table.write_text("P [bar],F [N]\n0.05,0\n1,100\n2,200\n", encoding="utf-8")
     code, out, err = _run(["import", str(table), *MUSCLE, "--vented", "50mbar", "--out",
                            str(tmp_path / "runs")], capsys)
+    assert code == 0, err
+    assert "vented reading 0.05 bar given: subtracted" in err
+    run = load_run(out.strip())
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], [0.0, 0.95, 1.95])
+    assert run.meta.imported_from["vented_reading_bar"] == 0.05
+    # an absolute sensor's sweep, 1.013 bar at both ends: asked, not kept as gauge pressures
+    table.write_text("P [bar],F [N]\n1.013,37\n2.013,1482\n3.013,2928\n1.013,38\n",
+                     encoding="utf-8")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "abs")],
+                          capsys)
     assert code == 2 and out == ""
-    assert err == ("mkm import: error: --vented 0.05 bar: steps.csv has no time column: "
-                   "expected --vented with a time series only (its first samples read vented); "
-                   "a step table's pressures are imported as they are\n")
-    assert not (tmp_path / "runs").exists()
+    assert err == ("mkm import: error: steps.csv: the table starts and ends held at 1.013 bar "
+                   "('P [bar]') and reads no lower: the atmosphere an absolute sensor reads "
+                   "vented (0.6-1.1 bar), or a muscle kept pressurised from start to end, which "
+                   "the pressures cannot tell apart: expected --vented 1.013bar (an absolute "
+                   "sensor: subtracted, the force tared at the rest) or --vented none (a gauge: "
+                   "kept as read)\n")
+    code, out, err = _run(["import", str(table), *MUSCLE, "--vented", "1.013bar", "--out",
+                           str(tmp_path / "abs")], capsys)
+    assert code == 0, err
+    run = load_run(out.strip())
+    np.testing.assert_allclose(run.steps["pressure_bar_mean"], [0.0, 1.0, 2.0, 0.0],
+                               atol=1e-12)
+    assert run.meta.imported_from["tare_N"] == 37.0  # its rising branch's 0 bar row
+    code, out, err = _run(["import", str(table), *MUSCLE, "--vented", "none", "--out",
+                           str(tmp_path / "gauge")], capsys)
+    assert code == 0 and "no tare: the table has no 0 bar row" in err
     table.write_text("P [bar],F [N]\n0,0\n1,100\n-0.5,0\n", encoding="utf-8")
     code, _, err = _run(["import", str(table), *MUSCLE, "--out", str(tmp_path / "runs")],
                         capsys)

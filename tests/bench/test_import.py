@@ -1681,10 +1681,11 @@ def test_a_fine_step_table_of_many_rows_keeps_one_step_per_row_when_told(tmp_pat
     (table,), _ = _import(mkm_cli, timed, *MUSCLE, "--eps", "0", "--one-step-per-row")
     assert table.meta.imported_from["shape"] == "steps" and len(table.steps) == fine.size
     np.testing.assert_allclose(table.steps["start_s"], 0.5 * np.arange(fine.size))
-    # a vented reading given would be ignored: refused
-    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--one-step-per-row",
-                            "--vented", "0.1", "--out", str(tmp_path / "refused")])
-    assert code == 2 and err.count("\n") == 1 and "--vented 0.1 bar: --one-step-per-row" in err
+    # a vented reading given is subtracted from each row's pressure, as from a time series'
+    (shifted,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--one-step-per-row",
+                              "--vented", "0.02")
+    assert "vented reading 0.02 bar given: subtracted" in err
+    assert shifted.steps["pressure_bar_mean"].max() == pytest.approx(2.98, abs=1e-9)
     code, out, _ = mkm_cli(["import", "--help"])
     assert code == 0 and "--one-step-per-row" in out
 
@@ -1723,13 +1724,16 @@ def test_a_record_without_time_from_an_absolute_sensor_takes_vented(tmp_path, mk
     pd.DataFrame({"p (bar)": p + 1.013 + rng.normal(0, 0.003, p.size),
                   "F (N)": thickwall_N(p, 0.0) + 4.0 + rng.normal(0, 0.3, p.size)}).to_csv(
         path, index=False)
-    (held,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
-    # its 100 vented rows found as a timed record's rest is (and the ramp's first rows within
-    # the plateau's 0.03 bar band): its median within 2 mbar
-    level = held.meta.imported_from["held_at_start_bar"]
+    # held at the atmosphere at both ends: which sensor it was is asked, not guessed; its 100
+    # vented rows found as a timed record's rest is (and the ramp's first rows within the
+    # plateau's 0.03 bar band): the reading to type within 2 mbar
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    level = float(re.search(r"starts and ends held at ([\d.]+) bar", err).group(1))
     assert level == pytest.approx(1.013, abs=0.002)
-    assert ("if the sensor reads absolute pressure, import again with --vented "
-            f"{level:.3f}bar") in err
+    assert f"expected --vented {level:.3f}bar (an absolute sensor" in err
+    assert not (tmp_path / "runs").exists()
     (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--vented", "1.013bar")
     recorded = run.meta.imported_from
     assert recorded["vented_reading_bar"] == 1.013 and recorded["vented"] == "given"
@@ -1738,6 +1742,45 @@ def test_a_record_without_time_from_an_absolute_sensor_takes_vented(tmp_path, mk
     top = run.steps.loc[run.steps["pressure_bar_mean"].idxmax()]
     assert top["force_N_mean"] == pytest.approx(thickwall_N([top["pressure_bar_mean"]], 0.0)[0],
                                                 abs=1.0 + 0.12 + 4 * 0.3 / np.sqrt(top["n"]))
+
+
+@pytest.mark.parametrize("header", ["Muscle pressure [psi]", "Muscle pressure [psig]"])
+def test_a_record_held_at_the_atmosphere_at_both_ends_asks_which_sensor(header, tmp_path,
+                                                                         mkm_cli):
+    # a 20 Hz ramp 0 -> 6 -> 0 bar logged by an absolute sensor in psi, 1.013 bar at rest, the
+    # load cell reading 37 N unloaded: kept as gauge pressures with a note, untared, so the
+    # muscle pulled only from 1 bar and identify blamed its rest length
+    rng = np.random.default_rng(18)
+    t = np.arange(0.0, 120.0, 0.05)
+    p = np.interp(t, [0, 10, 60, 110, 120], [0, 0, 6, 0, 0])
+    psi = 0.0689475729  # bar
+    path = tmp_path / "absolute.csv"
+    pd.DataFrame({"Elapsed [ms]": np.round(t * 1000).astype(int),
+                  header: (p + 1.013 + rng.normal(0, 0.004, t.size)) / psi,
+                  "Load cell [N]": thickwall_N(p, 0.0) + 37.0 + rng.normal(0, 0.5, t.size)}
+                 ).to_csv(path, index=False)
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    if header.endswith("[psig]"):  # the lab's unit says gauge: kept, as a note says
+        assert code == 0 and "kept as the gauge pressure its unit 'psig' says" in err
+        return
+    assert code == 2 and err.count("\n") == 1
+    # the rests' medians over 200 samples of 4 mbar noise: within a millibar
+    assert ("mkm import: error: absolute.csv: the record starts and ends held at 1.013 bar "
+            "('Muscle pressure [psi]') and reads no lower: the atmosphere an absolute sensor "
+            "reads vented (0.6-1.1 bar), or a muscle kept pressurised from start to end, which "
+            "the pressures cannot tell apart: expected --vented 1.013bar (an absolute sensor: "
+            "subtracted, the force tared at the rest) or --vented none (a gauge: kept as "
+            "read)") in err
+    assert not (tmp_path / "runs").exists()
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--vented", "1.013bar")
+    # the cell's 37 N taken off at the rest (200 samples of 0.5 N: 4 standard errors)
+    assert run.meta.imported_from["tare_N"] == pytest.approx(37.0, abs=4 * 0.5 / np.sqrt(200))
+    top = run.steps.loc[run.steps["pressure_bar_mean"].idxmax()]
+    assert top["force_N_mean"] == pytest.approx(
+        thickwall_N([top["pressure_bar_mean"]], 0.0)[0], rel=0.005)
+    (gauge,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--vented", "none")
+    assert gauge.samples["pressure_bar"].min() == pytest.approx(1.013, abs=0.02)
 
 
 def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
@@ -2511,6 +2554,35 @@ def test_a_record_whose_pressure_never_rises_is_refused(tmp_path, mkm_cli):
             and "within 0.06 bar of each other (a vented gauge's noise): expected a record of "
             "the muscle pressurised; is 'Pressure [bar]' its pressure?" in err)
     assert not (tmp_path / "runs").exists()
+
+
+@pytest.mark.parametrize("level_bar", [2.0, 1.0, 0.4])
+def test_a_file_of_one_held_step_is_named_a_hold(level_bar, tmp_path, mkm_cli):
+    # a lab that logs one file per pressure step, 20 s at 10 Hz held at its step: was "the
+    # pressure never rises ... (a vented gauge's noise)" of a muscle held at 2 bar; at 1 bar an
+    # absolute sensor's atmosphere; at 0.4 bar the hold was taken for a vented reading
+    rng = np.random.default_rng(8)
+    t = np.arange(0.0, 20.0, 0.1)
+    table = tmp_path / "LM8_step04.csv"
+    table.write_text("# Soft Robotics Lab, hand-made latex muscle LM-8 #3\n"
+                     "# set pressure 2.0 bar (up), logged 20 s after 10 s settling\n"
+                     + pd.DataFrame({"Temp [degC]": 22.4 + rng.normal(0, 0.05, t.size),
+                                     "Force [N]": 35.0 + rng.normal(0, 0.05, t.size),
+                                     "Time [s]": t,
+                                     "Pressure [kPa]": 100 * (level_bar + rng.normal(
+                                         0, 0.003, t.size))}).to_csv(index=False))
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    # the median of 200 samples of 3 mbar noise: within a millibar at 3 digits
+    assert f"LM8_step04.csv: the pressure is held at {level_bar:.3g} bar throughout" in err
+    assert ("within 0.06 bar of each other): one hold, no sweep to find steps in: expected a "
+            "record of the pressure rising; where each pressure step was logged to a file of "
+            "its own, import them as one table: a row per step (its pressure and force, and "
+            "direction up or down), or the files one after another on the clock they were logged "
+            "by (a hold's creep is timed from its step)") in err
+    assert not (tmp_path / "runs").exists()
+
 
 def test_a_second_session_appended_under_its_own_header_is_named_as_such(tmp_path, mkm_cli):
     # a logger that appends each session to one file, its header repeated: was "cell B42:

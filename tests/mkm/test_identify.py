@@ -557,6 +557,11 @@ def test_a_held_out_fit_the_model_cannot_predict_is_a_note_not_a_crash(muscle, m
     assert "no valid force" in result.checks[0]["heldout_failed"]
     note = next(n for n in result.notes if n.startswith("held out, "))
     assert "could not be predicted from the other runs" in note and "gap_mm=5" in note
+    # its steps are there: said as the failed fit, not as a branch without a step
+    first = result.summary().splitlines()[2]
+    assert first.endswith(f"{result.checks[0]['run']} (eps {result.checks[0]['eps']:g}, L0 "
+                          f"{result.checks[0]['L0_mm']:g} mm): not predicted: the fit to the "
+                          "other runs failed (the note below)"), first
 
 
 @pytest.mark.parametrize(("accuracy", "bound"), [
@@ -769,3 +774,35 @@ def test_the_assumed_ratio_refits_leaving_the_surrogate_box_are_one_note(one_run
         "the refits at the ends of the assumed rubber ratio left the surrogate's training box "
         "in 3 evaluations (first: C01_MPa=0.0304583 not in [0.0314, 0.0942]): the prediction "
         "band's rubber-ratio term is extrapolated there"]
+
+
+def test_a_wall_fitted_with_the_angle_and_rubber_is_not_called_separated():
+    """A 40 mm muscle's two ramps (eps 0, 0.1) identified with its wall (`--params
+    theta0,rubber,t0,friction,offset,zero`): theta0 23.4-26.8 deg, the rubber 0.43-6.2 x and the
+    wall 1.25-3.75 mm, each correlated +-1.00 with the wall; the note said 'theta0 and the rubber
+    are separated by the runs at eps 0, 0.1 (correlation -0.99)'."""
+    from types import SimpleNamespace
+
+    from mkm.identify.procedure import _identifiability
+
+    names = ["theta0_deg", "rubber_scale", "t0_mm", "hysteresis_fraction"]
+    values = {"theta0_deg": 24.02, "rubber_scale": 2.4456, "t0_mm": 2.5583,
+              "hysteresis_fraction": 0.0285}
+    interval = {"theta0_deg": (20.203, 26.811), "rubber_scale": (0.43228, 6.218),
+                "t0_mm": (1.25, 3.75), "hysteresis_fraction": (0.0263, 0.0302)}
+    correlation = np.array([[1.0, -0.99, 1.0, 0.1], [-0.99, 1.0, -1.0, -0.1],
+                            [1.0, -1.0, 1.0, 0.1], [0.1, -0.1, 0.1, 1.0]])
+    runs = [SimpleNamespace(eps=e, muscle={"t0_mm": 2.5}) for e in (0.0, 0.1)]
+    boot = {"interval": interval, "correlation": correlation, "identifiable": {}}
+    notes = _identifiability(runs, SimpleNamespace(names=names, values=values), boot)
+    assert notes[0] == ("theta0 and the rubber are not separated by the runs at eps 0, 0.1 "
+                        "(correlation -0.99): t0_mm, fitted with them, trades against both, so "
+                        "the interval of theta0_deg and rubber_scale is wide; where t0_mm is "
+                        "known, leave it out of --params")
+    # without the wall: the second eps separates them (the same runs fitted 23.44-24.22 deg)
+    correlation = np.array([[1.0, 0.09], [0.09, 1.0]])
+    boot = {"interval": {"theta0_deg": (23.435, 24.215), "rubber_scale": (2.3445, 2.6292)},
+            "correlation": correlation, "identifiable": {}}
+    notes = _identifiability(runs, SimpleNamespace(names=names[:2], values=values), boot)
+    assert notes == ["theta0 and the rubber are separated by the runs at eps 0, 0.1 "
+                     "(correlation +0.09)"]
