@@ -1017,7 +1017,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     if step_table and not isinstance(vented, str):  # an absolute sensor's table
         pressure = pressure - vented
         handling["vented_reading_bar"], handling["vented"] = float(vented), "given"
-        notes.append(f"vented reading {vented:.3g} bar given: subtracted")
+        notes.append(f"vented reading {vented:g} bar given: subtracted")
     elif (step_table and vented == "auto" and pressure.size > 1
           and not marked_gauge(found["pressure"].unit)
           and pressure[0] <= pressure.min() + series.PLATEAU_TOLERANCE_BAR):
