@@ -93,6 +93,12 @@ STD_CAVEAT = ("; an estimate from a surrogate's std, which most calls' errors st
 #: not every call of every fresh draw: the tail is heavy (docs/guide/force-models.md,
 #: docs/guide/surrogates.md).
 RANGE_STD_FACTOR = 6.0
+#: Where the practical range's surrogate errs most, said where its bound keeps it out: its worst
+#: muscles over fresh draws (``worst_muscles`` in docs/measured/surrogate_range_gp_pooled.json,
+#: docs/guide/surrogates.md; ``tests/test_docs.py`` holds the guide to that file).
+RANGE_WORST = ("a braid angle below 20 deg, a shortening near the braid lock, a threshold near "
+               "the top pressure, a tube short (L0 near 3 D0) or thick-walled (docs/guide/"
+               "surrogates.md, \"Beyond the box\")")
 # A mesh's recorded error is the largest over the study's muscles; another muscle may do a
 # little worse
 MESH_SAFETY = 1.5
@@ -335,10 +341,15 @@ class AutoModel(ForceModel):
         measured = None  # which points lie where the meshes' errors were measured
         ref = self.reference(P, D0, t0, eps)
         gapped = self.gapped
+        # the reference surrogate's own bound [%], K s: where it exceeds the tolerance no model
+        # bounded by it answers, and an FE mesh's answer says so (:func:`_declined`)
+        own = np.full(P.shape, np.nan)
+        meshes = {FALLBACK}
         if ref is not None:
             R, s, ref_spec, ref_pred = ref
             scale = _sweep_scale(R, np.stack([D0, t0, eps], axis=1))
             factor = RANGE_STD_FACTOR if ref_spec == RANGE_SPEC else STD_FACTOR
+            own = 100.0 * factor * s / scale
         for row in candidates(table).itertuples():
             if not todo.any():
                 break
@@ -348,6 +359,7 @@ class AutoModel(ForceModel):
                 continue  # no reference bounds it with the gap
             model_pred, predictor = None, row.predictor
             if row.family == "FE":
+                meshes.add(row.predictor)
                 if measured is None:  # one muscle: the same for every mesh
                     measured = _measured_points(self._candidate(row.spec).params(), P, D0, t0,
                                                 eps)
@@ -355,7 +367,7 @@ class AutoModel(ForceModel):
             elif ref is None:
                 continue  # no estimate of the reference here: only the FE may answer
             elif row.spec == REFERENCE_SPEC:
-                bound = 100.0 * factor * s / scale
+                bound = own
                 why = f"{factor:g} x the surrogate's calibrated std"
                 if ref_spec == RANGE_SPEC:  # it answers in the default's place
                     model_pred, predictor = ref_pred, RANGE_PREDICTOR
@@ -390,6 +402,9 @@ class AutoModel(ForceModel):
             todo[ok] = False
         if ref is None:
             source[todo] = "outside the surrogate's box: no estimate of the reference there"
+        else:
+            by_mesh = todo | np.isin(used, list(meshes))
+            source[by_mesh] = source[by_mesh] + _declined(own[by_mesh], tol, ref_spec, factor)
         if todo.any():  # the reference answers: its bound 0 holds where its own error is known
             if measured is None:
                 measured = _measured_points(self._candidate(FALLBACK_SPEC).params(), P, D0, t0,
@@ -464,6 +479,21 @@ class AutoModel(ForceModel):
         return {key: value.reshape(P.shape) for key, value in
                 {**out, "valid": valid, "converged": converged, "limit": limit,
                  "failure": failure}.items()}
+
+
+def _declined(own: np.ndarray, tol: float, ref_spec: str, factor: float) -> str:
+    """What an FE mesh's answer adds where the reference surrogate's own bound ``own`` [%]
+    exceeds the tolerance ``tol`` [%] at some of its points (empty where it does not): that
+    bound, which keeps the surrogate and the closed forms it bounds out. Outside the default's
+    box it names the practical range's surrogate and where that one errs most."""
+    if not np.any(own > tol):  # NaN (no std) never exceeds it
+        return ""
+    # "x its std", not STD_BOUND's words: the mesh's own bound does not rest on a std
+    if ref_spec == RANGE_SPEC:
+        return (f"; the practical range's surrogate's own bound here is up to "
+                f"{np.nanmax(own):.3g}% ({factor:g} x its std), where it errs most: "
+                f"{RANGE_WORST}")
+    return f"; the surrogate's own bound here is up to {np.nanmax(own):.3g}% ({factor:g} x its std)"
 
 
 def spec_of(predictor: str, table: Path | str | None = None) -> str:
