@@ -36,19 +36,19 @@ muscle's sweep) a posteriori, at those very points:
 Candidates are tried cheapest first (their measured seconds per force, from the study table); by
 default ONE model answers the whole call, the cheapest whose largest bound over all points meets the
 tolerance and whose prediction is valid at every point, so a curve never mixes models.
-``per_point=True`` chooses per point. Outside the surrogate's box (a point, or a muscle parameter it
-was not trained on) there is no estimate of the reference: only the FE meshes qualify, and the fine
-mesh answers if nothing else does. A gap between tube and braid (``gap_mm`` other than 0, given or
-held by the candidates' calibration: a muscle identified with a gap) is modelled by the closed form
-and the FE (their registry entries take it), not by the surrogate, so nothing estimates the
-reference with the gap and no closed form's error is bounded there (its gap-free bound is not
-one): only the FE meshes answer,
-each by its recorded mesh error (with a gap the coarse mesh is as close to the fine one:
-``tests/fem/fe/test_contact.py``), and the fine mesh, with the gap, if nothing else meets the
-tolerance; :func:`explain` says first which models cannot answer. Each point records
-the model that answered (``model_used``), its bound (``error_bound_pct``) and how the bound was
-obtained (``bound_source``); :func:`explain` says it in words, and the parameters (the provenance)
-name the reference and the factor.
+``per_point=True`` chooses per point, each point's surrogate std taken as the largest of its muscle
+in the call (the factors K are measured on a call's largest error over its largest std). Outside the
+surrogate's box (a point, or a muscle parameter it was not trained on) there is no estimate of the
+reference: only the FE meshes qualify, and the fine mesh answers if nothing else does. A gap between
+tube and braid (``gap_mm`` other than 0, given or held by the candidates' calibration: a muscle
+identified with a gap) is modelled by the closed form and the FE (their registry entries take it),
+not by the surrogate, so nothing estimates the reference with the gap and no closed form's error is
+bounded there (its gap-free bound is not one): only the FE meshes answer, each by its recorded mesh
+error (with a gap the coarse mesh is as close to the fine one: ``tests/fem/fe/test_contact.py``),
+and the fine mesh, with the gap, if nothing else meets the tolerance; :func:`explain` says first
+which models cannot answer. Each point records the model that answered (``model_used``), its bound
+(``error_bound_pct``) and how the bound was obtained (``bound_source``); :func:`explain` says it in
+words, and the parameters (the provenance) name the reference and the factor.
 """
 
 from __future__ import annotations
@@ -139,15 +139,20 @@ def physics_rungs(gap: bool) -> list[str]:
             and ("gap_mm" in MODELS.entry(name).parameters) == gap]
 
 
-def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
-    """Per point, the largest reference force of its muscle (same D0, t0, eps): Equation 7's
-    denominator."""
-    scale = np.empty(reference.shape)
+def _muscle_max(values: np.ndarray, geometry: np.ndarray) -> np.ndarray:
+    """Per point, the largest of ``values`` over its muscle's points (same D0, t0, eps)."""
+    out = np.empty(values.shape)
     _, which = np.unique(geometry, axis=0, return_inverse=True)
     for g in np.unique(which):
         here = which.ravel() == g
-        scale[here] = max(np.nanmax(np.abs(reference[here]), initial=0.0), MIN_SCALE_N)
-    return scale
+        out[here] = np.nanmax(values[here], initial=0.0)
+    return out
+
+
+def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
+    """Per point, the largest reference force of its muscle (same D0, t0, eps), at least
+    :data:`MIN_SCALE_N`: Equation 7's denominator."""
+    return np.maximum(_muscle_max(np.abs(reference), geometry), MIN_SCALE_N)
 
 
 def _in_practical_range(P, D0, t0, eps) -> bool:
@@ -206,7 +211,8 @@ class AutoModel(ForceModel):
         Mesh error table (default ``mkm/data/mesh_errors.csv``, :mod:`mkm.mesh_errors`): the
         FE meshes' bound at the scale of the call.
     per_point : bool
-        False (default): one model for the whole call. True: the cheapest model per point.
+        False (default): one model for the whole call. True: the cheapest model per point,
+        bounded by the reference surrogate's largest std of the muscle in the call.
     L0_mm, theta0_deg, C10_MPa, C01_MPa : float, optional
         The muscle: length at rest [mm], braid angle at rest [deg], rubber [MPa]; passed to
         every candidate (None: each model's default).
@@ -347,8 +353,14 @@ class AutoModel(ForceModel):
         meshes = {FALLBACK}
         if ref is not None:
             R, s, ref_spec, ref_pred = ref
-            scale = _sweep_scale(R, np.stack([D0, t0, eps], axis=1))
+            geometry = np.stack([D0, t0, eps], axis=1)
+            scale = _sweep_scale(R, geometry)
             factor = RANGE_STD_FACTOR if ref_spec == RANGE_SPEC else STD_FACTOR
+            if self.per_point:
+                # the factors are measured as a call's largest error over its largest std, not
+                # a point's error over its own: a point chosen alone takes its muscle's largest
+                # std of the call
+                s = _muscle_max(s, geometry)
             own = 100.0 * factor * s / scale
         for row in candidates(table).itertuples():
             if not todo.any():

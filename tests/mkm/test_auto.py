@@ -260,6 +260,44 @@ def test_per_point_may_mix_models_a_sweep_never_does(table_path):
     assert (mixed.extras["error_bound_pct"][used != "axisym-fine"] <= 100 * tol).all()
 
 
+class RisingStdSurrogate(FakeSurrogate):
+    """The fake surrogate with a std rising with the pressure, ``std_N`` at the call's top."""
+
+    def _forces(self, P, D0, t0, eps):
+        out = super()._forces(P, D0, t0, eps)
+        return {**out, "force_std_N": self.std_N * np.asarray(P, dtype=float) / np.max(P)}
+
+
+def test_per_point_a_point_takes_its_muscles_largest_std_of_the_call(table_path):
+    # A fresh muscle of the practical range (seed 20263515, t0 0.3 D0, theta0 18 deg) whose
+    # threshold the range surrogate put 15 of its std low: asked for 5 % per point, it answered
+    # 6 bar by its std there (6 std, 4.9 % of the sweep's force) 8.9 % off the fine mesh, while
+    # 6 of its largest std of the sweep, the quantity the factor is measured on, are 9.75 %.
+    def build(spec, **muscle):
+        if spec == RANGE_SPEC:
+            return RisingStdSurrogate(std_N=RANGE_STD_N, D0_max_mm=60.0, L0_mm=282.0, **muscle)
+        return fake_build(spec, **muscle)
+
+    ref = make_model("axisym", mesh="coarse").predict(P, 55.0, 2.5, 0.05).force_N
+    largest = 100 * RANGE_STD_FACTOR * RANGE_STD_N / ref.max()
+    # between the bound at the lowest pressure, by its own std, and the call's largest
+    tol = 0.9 * largest / 100
+    assert 100 * RANGE_STD_FACTOR * RANGE_STD_N * P[0] / P[-1] / ref.max() < 100 * tol
+    pred = AutoModel(table=table_path, build=build, tolerance=tol, per_point=True,
+                     mesh_errors=no_mesh_errors(table_path)).predict(P, 55.0, 2.5, 0.05)
+    used = pred.extras["model_used"]
+    assert RANGE_PREDICTOR not in set(used) and "thickwall" not in set(used)
+    assert set(used) <= {"axisym-coarse", "axisym-medium", "axisym-fine"}
+    # above the call's largest, it answers every point, per point as for the call
+    for per_point in (True, False):
+        wide = AutoModel(table=table_path, build=build, tolerance=1.01 * largest / 100,
+                         per_point=per_point, mesh_errors=no_mesh_errors(table_path)
+                         ).predict(P, 55.0, 2.5, 0.05)
+        assert set(wide.extras["model_used"]) == {RANGE_PREDICTOR}
+        np.testing.assert_allclose(wide.extras["error_bound_pct"],
+                                   largest * (P / P[-1] if not per_point else 1.0))
+
+
 @pytest.fixture(scope="module")
 def mesh_table(tmp_path_factory):
     """A hand-made mesh error table: the coarse mesh's threshold 0.2 % of it off and 0.1 % of
