@@ -22,7 +22,12 @@ S, S+1, ...; the box once, seed S) and adds the errors and coverage pooled over 
 points of one muscle share its errors: coverage moves several points between draws of 60);
 ``--seeds`` names the draws' seeds instead (the box drawn once, with the first) and
 ``--pool-with`` adds FE sets of the practical range made before (a check set), each scored
-alone and pooled with the draws.
+alone and pooled with the draws. Each set records its ``--worst`` muscles (default 10): the
+inputs, FE force, force and std at each one's worst point, the error in std there, eps over the
+braid lock, and ``auto_bound_pct``, the bound ``auto`` states for the surrogate over a call of
+the muscle's sweep (its std factor, :data:`mkm.auto.RANGE_STD_FACTOR` for the practical range's
+kind, times its largest std over the sweep, in % of its largest force there): where that bound
+exceeds a tolerance, ``auto`` does not answer with the surrogate.
 Targets: over the range worst <= 1 %, median <= 0.2 %; in the box worst <= 0.25 %.
 """
 
@@ -38,12 +43,48 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 
+from mkm.auto import MIN_SCALE_N, RANGE_STD_FACTOR, STD_FACTOR
 from mkm.core.records import jsonable, provenance, recorded_path
+from mkm.fem.limits import lock_eps
+from mkm.surrogate import kinds
 from mkm.surrogate.design import EVAL_PRESSURES, build_practical_set, fe_sweeps, random_muscles
+from mkm.surrogate.features import columns_of
 from mkm.surrogate.kinds import make_estimator
 from mkm.surrogate.quiet import quiet_fits
 from mkm.surrogate.train import cached_model
 from mkm.surrogate.training_data import load_training_data
+
+
+def worst_muscles(estimator, data, factor: float, n: int) -> list[dict]:
+    """The ``n`` muscles of largest error (each one's largest |F - F_FE| over its sweep, in % of
+    its largest FE force): its group ``muscle``, inputs, FE force, force and std at that point,
+    the error in std there and ``auto``'s bound for the surrogate over the sweep (``factor``
+    times the largest std, in % of the largest force, at least :data:`mkm.auto.MIN_SCALE_N`)."""
+    if n <= 0:
+        return []
+    has_std = hasattr(estimator, "calibrate_std")
+    force, std = (estimator.predict(data.X, return_std=True) if has_std
+                  else (estimator.predict(data.X), None))
+    values = columns_of(data.X, tuple(data.inputs), data.fixed)
+    rows = []
+    for g in np.unique(data.groups):
+        these = np.flatnonzero(data.groups == g)
+        top = float(np.max(np.abs(data.y[these])))
+        if top <= 0:
+            continue
+        miss = np.abs(force[these] - data.y[these])
+        at = these[np.argmax(miss)]
+        row = {"muscle": int(g), **{name: float(values[name][at]) for name in values}}
+        row.update(eps_per_lock=float(values["eps"][at] / lock_eps(values["theta0_deg"][at])),
+                   fe_force_N=float(data.y[at]), force_N=float(force[at]),
+                   err_pct=100.0 * float(miss.max()) / top)
+        if std is not None:
+            largest = max(float(np.max(np.abs(force[these]))), MIN_SCALE_N)
+            row.update(force_std_N=float(std[at]),
+                       err_in_std=float(miss.max() / std[at]) if std[at] > 0 else None,
+                       auto_bound_pct=100.0 * factor * float(np.max(std[these])) / largest)
+        rows.append(row)
+    return sorted(rows, key=lambda r: -r["err_pct"])[:n]
 
 
 def worst_per_muscle(estimator, data) -> np.ndarray:
@@ -67,8 +108,9 @@ def std_coverage(estimator, data) -> dict | None:
     return within(estimator, data.X, data.y)
 
 
-def summary(label: str, estimator, data, drawn: int) -> dict:
-    """Worst, median and 90th percentile of each muscle's largest error and the coverage of
+def summary(label: str, estimator, data, drawn: int, factor: float, worst: int) -> dict:
+    """Worst, median and 90th percentile of each muscle's largest error, the coverage and the
+    ``worst`` muscles (:func:`worst_muscles`; pooled, each with ``set``, its part's index) of
     ``data`` (a :class:`~mkm.surrogate.training_data.TrainingData` or a list of them, pooled)."""
     parts = data if isinstance(data, list) else [data]
     errors = np.concatenate([worst_per_muscle(estimator, d) for d in parts])
@@ -77,7 +119,11 @@ def summary(label: str, estimator, data, drawn: int) -> dict:
     row = {"muscles_drawn": drawn, "muscles_scored": int(errors.size),
            "worst_pct": float(errors.max()), "median_pct": float(np.median(errors)),
            "p90_pct": float(np.percentile(errors, 90)),
-           "std_coverage": std_coverage(estimator, pooled)}
+           "std_coverage": std_coverage(estimator, pooled),
+           "worst_muscles": sorted(({**m, "set": k} if len(parts) > 1 else m
+                                    for k, d in enumerate(parts)
+                                    for m in worst_muscles(estimator, d, factor, worst)),
+                                   key=lambda m: -m["err_pct"])[:worst]}
     cover = row["std_coverage"]
     within = ("" if cover is None else ", within 1/2/3 std " + " / ".join(
         f"{100 * cover[f'within_{k}std']:.1f}" for k in (1, 2, 3)) + " % of the points")
@@ -102,8 +148,12 @@ def main() -> None:
     parser.add_argument("--pool-with", nargs="+", default=[], metavar="FE_CSV",
                         help="FE sets of the practical range (CSV with sidecar) scored alone "
                         "and pooled with the draws")
+    parser.add_argument("--worst", type=int, default=10,
+                        help="muscles of largest error recorded per set (default 10)")
     parser.add_argument("--out", default=None)
     args = parser.parse_args()
+    if args.worst < 0:
+        parser.error(f"--worst {args.worst} is invalid: expected 0 or more muscles")
     if args.draws < 1:
         parser.error(f"--draws {args.draws} is invalid: expected at least 1")
     if args.seeds is not None and (args.seed is not None or args.draws != 1):
@@ -136,6 +186,9 @@ def main() -> None:
         print(f"{args.kind} fitted on {data.n_muscles} muscles in "
               f"{time.perf_counter() - start:.0f} s")
     results = {"seed": seed, "kind": args.kind, "train": train, "draw_seeds": draw_seeds}
+    # the factor auto bounds this kind with (mkm.design.box_search.std_factor, by kind)
+    factor = RANGE_STD_FACTOR if args.kind == kinds.RANGE else STD_FACTOR
+    scored = {"factor": factor, "worst": args.worst}
     with tempfile.TemporaryDirectory() as folder:
         draws = []
         for k, draw_seed in enumerate(draw_seeds):
@@ -145,27 +198,28 @@ def main() -> None:
         several = len(draw_seeds) > 1
         results["practical_range"] = summary(
             "practical range" + (f", seed {seed}" if several else ""), estimator,
-            draws[0], args.muscles)
+            draws[0], args.muscles, **scored)
         if several:
             results["practical_range_draws"] = [results["practical_range"]] + [
-                summary(f"practical range, seed {s}", estimator, d, args.muscles)
+                summary(f"practical range, seed {s}", estimator, d, args.muscles, **scored)
                 for s, d in zip(draw_seeds[1:], draws[1:], strict=True)]
         if pooled_sets:
             results["pool_with"] = [
-                {"file": path.name, **summary(path.name, estimator, data, drawn)}
+                {"file": path.name, **summary(path.name, estimator, data, drawn, **scored)}
                 for path, data, drawn in pooled_sets]
         if several or pooled_sets:
             results["practical_range_pooled"] = summary(
                 f"practical range, {len(draw_seeds)} draws"
                 + "".join(f" and {path.name}" for path, _, _ in pooled_sets) + " pooled",
                 estimator, draws + [data for _, data, _ in pooled_sets],
-                args.muscles * len(draw_seeds) + sum(drawn for _, _, drawn in pooled_sets))
+                args.muscles * len(draw_seeds) + sum(drawn for _, _, drawn in pooled_sets),
+                **scored)
         box = random_muscles(args.box_muscles, seed)
         frame, _ = fe_sweeps(box, "fine", EVAL_PRESSURES, progress=False)
         path = Path(folder) / "box.csv"
         frame.to_csv(path, index=False)
         results["paper_box"] = summary(
-            "paper's box", estimator, load_training_data(path), args.box_muscles)
+            "paper's box", estimator, load_training_data(path), args.box_muscles, **scored)
     if args.out:
         with open(args.out, "w", encoding="utf-8") as f:
             json.dump({**results, "provenance": provenance()}, f, indent=2, default=jsonable)

@@ -36,19 +36,19 @@ muscle's sweep) a posteriori, at those very points:
 Candidates are tried cheapest first (their measured seconds per force, from the study table); by
 default ONE model answers the whole call, the cheapest whose largest bound over all points meets the
 tolerance and whose prediction is valid at every point, so a curve never mixes models.
-``per_point=True`` chooses per point. Outside the surrogate's box (a point, or a muscle parameter it
-was not trained on) there is no estimate of the reference: only the FE meshes qualify, and the fine
-mesh answers if nothing else does. A gap between tube and braid (``gap_mm`` other than 0, given or
-held by the candidates' calibration: a muscle identified with a gap) is modelled by the closed form
-and the FE (their registry entries take it), not by the surrogate, so nothing estimates the
-reference with the gap and no closed form's error is bounded there (its gap-free bound is not
-one): only the FE meshes answer,
-each by its recorded mesh error (with a gap the coarse mesh is as close to the fine one:
-``tests/fem/fe/test_contact.py``), and the fine mesh, with the gap, if nothing else meets the
-tolerance; :func:`explain` says first which models cannot answer. Each point records
-the model that answered (``model_used``), its bound (``error_bound_pct``) and how the bound was
-obtained (``bound_source``); :func:`explain` says it in words, and the parameters (the provenance)
-name the reference and the factor.
+``per_point=True`` chooses per point, each point's surrogate std taken as the largest of its muscle
+in the call (the factors K are measured on a call's largest error over its largest std). Outside the
+surrogate's box (a point, or a muscle parameter it was not trained on) there is no estimate of the
+reference: only the FE meshes qualify, and the fine mesh answers if nothing else does. A gap between
+tube and braid (``gap_mm`` other than 0, given or held by the candidates' calibration: a muscle
+identified with a gap) is modelled by the closed form and the FE (their registry entries take it),
+not by the surrogate, so nothing estimates the reference with the gap and no closed form's error is
+bounded there (its gap-free bound is not one): only the FE meshes answer, each by its recorded mesh
+error (with a gap the coarse mesh is as close to the fine one: ``tests/fem/fe/test_contact.py``),
+and the fine mesh, with the gap, if nothing else meets the tolerance; :func:`explain` says first
+which models cannot answer. Each point records the model that answered (``model_used``), its bound
+(``error_bound_pct``) and how the bound was obtained (``bound_source``); :func:`explain` says it in
+words, and the parameters (the provenance) name the reference and the factor.
 """
 
 from __future__ import annotations
@@ -93,6 +93,12 @@ STD_CAVEAT = ("; an estimate from a surrogate's std, which most calls' errors st
 #: not every call of every fresh draw: the tail is heavy (docs/guide/force-models.md,
 #: docs/guide/surrogates.md).
 RANGE_STD_FACTOR = 6.0
+#: Where the practical range's surrogate errs most, said where its bound keeps it out: its worst
+#: muscles over fresh draws (``worst_muscles`` in docs/measured/surrogate_range_gp_pooled.json,
+#: docs/guide/surrogates.md; ``tests/test_docs.py`` holds the guide to that file).
+RANGE_WORST = ("a braid angle below 20 deg, a shortening near the braid lock, a threshold near "
+               "the top pressure, a tube short (L0 near 3 D0) or thick-walled (docs/guide/"
+               "surrogates.md, \"Beyond the box\")")
 # A mesh's recorded error is the largest over the study's muscles; another muscle may do a
 # little worse
 MESH_SAFETY = 1.5
@@ -133,15 +139,20 @@ def physics_rungs(gap: bool) -> list[str]:
             and ("gap_mm" in MODELS.entry(name).parameters) == gap]
 
 
-def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
-    """Per point, the largest reference force of its muscle (same D0, t0, eps): Equation 7's
-    denominator."""
-    scale = np.empty(reference.shape)
+def _muscle_max(values: np.ndarray, geometry: np.ndarray) -> np.ndarray:
+    """Per point, the largest of ``values`` over its muscle's points (same D0, t0, eps)."""
+    out = np.empty(values.shape)
     _, which = np.unique(geometry, axis=0, return_inverse=True)
     for g in np.unique(which):
         here = which.ravel() == g
-        scale[here] = max(np.nanmax(np.abs(reference[here]), initial=0.0), MIN_SCALE_N)
-    return scale
+        out[here] = np.nanmax(values[here], initial=0.0)
+    return out
+
+
+def _sweep_scale(reference: np.ndarray, geometry: np.ndarray) -> np.ndarray:
+    """Per point, the largest reference force of its muscle (same D0, t0, eps), at least
+    :data:`MIN_SCALE_N`: Equation 7's denominator."""
+    return np.maximum(_muscle_max(np.abs(reference), geometry), MIN_SCALE_N)
 
 
 def _in_practical_range(P, D0, t0, eps) -> bool:
@@ -200,7 +211,8 @@ class AutoModel(ForceModel):
         Mesh error table (default ``mkm/data/mesh_errors.csv``, :mod:`mkm.mesh_errors`): the
         FE meshes' bound at the scale of the call.
     per_point : bool
-        False (default): one model for the whole call. True: the cheapest model per point.
+        False (default): one model for the whole call. True: the cheapest model per point,
+        bounded by the reference surrogate's largest std of the muscle in the call.
     L0_mm, theta0_deg, C10_MPa, C01_MPa : float, optional
         The muscle: length at rest [mm], braid angle at rest [deg], rubber [MPa]; passed to
         every candidate (None: each model's default).
@@ -335,10 +347,21 @@ class AutoModel(ForceModel):
         measured = None  # which points lie where the meshes' errors were measured
         ref = self.reference(P, D0, t0, eps)
         gapped = self.gapped
+        # the reference surrogate's own bound [%], K s: where it exceeds the tolerance no model
+        # bounded by it answers, and an FE mesh's answer says so (:func:`_declined`)
+        own = np.full(P.shape, np.nan)
+        meshes = {FALLBACK}
         if ref is not None:
             R, s, ref_spec, ref_pred = ref
-            scale = _sweep_scale(R, np.stack([D0, t0, eps], axis=1))
+            geometry = np.stack([D0, t0, eps], axis=1)
+            scale = _sweep_scale(R, geometry)
             factor = RANGE_STD_FACTOR if ref_spec == RANGE_SPEC else STD_FACTOR
+            if self.per_point:
+                # the factors are measured as a call's largest error over its largest std, not
+                # a point's error over its own: a point chosen alone takes its muscle's largest
+                # std of the call
+                s = _muscle_max(s, geometry)
+            own = 100.0 * factor * s / scale
         for row in candidates(table).itertuples():
             if not todo.any():
                 break
@@ -348,6 +371,7 @@ class AutoModel(ForceModel):
                 continue  # no reference bounds it with the gap
             model_pred, predictor = None, row.predictor
             if row.family == "FE":
+                meshes.add(row.predictor)
                 if measured is None:  # one muscle: the same for every mesh
                     measured = _measured_points(self._candidate(row.spec).params(), P, D0, t0,
                                                 eps)
@@ -355,7 +379,7 @@ class AutoModel(ForceModel):
             elif ref is None:
                 continue  # no estimate of the reference here: only the FE may answer
             elif row.spec == REFERENCE_SPEC:
-                bound = 100.0 * factor * s / scale
+                bound = own
                 why = f"{factor:g} x the surrogate's calibrated std"
                 if ref_spec == RANGE_SPEC:  # it answers in the default's place
                     model_pred, predictor = ref_pred, RANGE_PREDICTOR
@@ -390,6 +414,9 @@ class AutoModel(ForceModel):
             todo[ok] = False
         if ref is None:
             source[todo] = "outside the surrogate's box: no estimate of the reference there"
+        else:
+            by_mesh = todo | np.isin(used, list(meshes))
+            source[by_mesh] = source[by_mesh] + _declined(own[by_mesh], tol, ref_spec, factor)
         if todo.any():  # the reference answers: its bound 0 holds where its own error is known
             if measured is None:
                 measured = _measured_points(self._candidate(FALLBACK_SPEC).params(), P, D0, t0,
@@ -464,6 +491,21 @@ class AutoModel(ForceModel):
         return {key: value.reshape(P.shape) for key, value in
                 {**out, "valid": valid, "converged": converged, "limit": limit,
                  "failure": failure}.items()}
+
+
+def _declined(own: np.ndarray, tol: float, ref_spec: str, factor: float) -> str:
+    """What an FE mesh's answer adds where the reference surrogate's own bound ``own`` [%]
+    exceeds the tolerance ``tol`` [%] at some of its points (empty where it does not): that
+    bound, which keeps the surrogate and the closed forms it bounds out. Outside the default's
+    box it names the practical range's surrogate and where that one errs most."""
+    if not np.any(own > tol):  # NaN (no std) never exceeds it
+        return ""
+    # "x its std", not STD_BOUND's words: the mesh's own bound does not rest on a std
+    if ref_spec == RANGE_SPEC:
+        return (f"; the practical range's surrogate's own bound here is up to "
+                f"{np.nanmax(own):.3g}% ({factor:g} x its std), where it errs most: "
+                f"{RANGE_WORST}")
+    return f"; the surrogate's own bound here is up to {np.nanmax(own):.3g}% ({factor:g} x its std)"
 
 
 def spec_of(predictor: str, table: Path | str | None = None) -> str:

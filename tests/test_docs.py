@@ -695,6 +695,42 @@ def test_the_guides_range_surrogate_rows_are_their_measured_files(measured, seed
         assert cells[2] == cover(part), label
 
 
+def test_the_guides_worst_range_muscles_are_their_measured_file():
+    """surrogates.md's paragraph on the range surrogate's 10 worst fresh muscles (how many lie in
+    each region, their errors in % and in std, auto's bound on them) is
+    ``surrogate_range_gp_pooled.json``'s ``worst_muscles``, and the regions auto's message
+    names (:data:`mkm.auto.RANGE_WORST`) are those the paragraph counts."""
+    import json
+
+    from mkm.auto import RANGE_WORST
+
+    record = json.loads((DOCS / "measured" / "surrogate_range_gp_pooled.json").read_text(
+        encoding="utf-8"))
+    worst = record["practical_range_pooled"]["worst_muscles"]
+    text = " ".join((DOCS / "guide" / "surrogates.md").read_text(encoding="utf-8").split())
+    counts = {"a braid angle below 20 deg": sum(m["theta0_deg"] < 20 for m in worst),
+              "a shortening at 85 % of the braid lock or more":
+                  sum(m["eps_per_lock"] >= 0.85 for m in worst),
+              "pull less than 16 N at 8 bar": sum(m["pressure_bar"] == 8 and m["fe_force_N"] < 16
+                                                 for m in worst),
+              "are short (L0 below 3.5 D0)": sum(m["L0_mm"] < 3.5 * m["D0_mm"] for m in worst),
+              "thick-walled (t0 at 0.15 D0 or more)":
+                  sum(m["t0_mm"] >= 0.15 * m["D0_mm"] for m in worst)}
+    said = text.split(f"Its {len(worst)} worst muscles over the five pooled draws")[1][:1400]
+    for region, n in counts.items():
+        assert re.search(rf"\b{n} (have |)" + re.escape(region), said), region
+    err = [m["err_pct"] for m in worst]
+    bound = [m["auto_bound_pct"] for m in worst]
+    assert (f"Their errors, {min(err):.3g} to {max(err):.3g} %, are each within "
+            f"{max(m['err_in_std'] for m in worst):.3g} of the std") in said
+    ratio = min(b / e for b, e in zip(bound, err, strict=True))
+    assert (f"is {min(bound):.2g} to {max(bound):.3g} %, {ratio:.2g} times the error or "
+            "more") in said
+    for words in ("braid angle below 20 deg", "braid lock", "threshold near the top pressure",
+                  "short (L0 near 3 D0) or thick-walled"):
+        assert words in RANGE_WORST
+
+
 def test_the_guides_pooled_range_surrogate_rows_are_their_measured_file():
     """The pooled draws' rows of surrogates.md (seeds 20261701-20261705 and that seed's box)
     hold the coverage of ``surrogate_range_gp_pooled.json`` (98.2 % within 3 std where the
