@@ -613,9 +613,8 @@ def creep_or_gain(runs, best, boot, other_braid: dict | None = None) -> dict:
     sliding on its tube pulls less than a bonded braid by a share of every force, which a fit
     with the bonded braid takes as such a creep (``bench_identify_wrong_range.py`` seed
     20261615: a sliding sleeve fitted as a 5.7 % creep at 1 s, within the noise, on an exact
-    cell; the creep the same with 0.3 % friction as with its 8 %), and a braid is a likelier
-    cause than a cell that many times off its tolerance. Where it does not, the note says
-    so."""
+    cell), and a braid is a likelier cause than a cell that many times off its tolerance.
+    Where it does not, the note says so."""
     share = best.values["creep_fraction"]
     tolerance = max(r.sensitivity_tolerance for r in runs)
     low, high = boot["interval"]["log_tau"]
