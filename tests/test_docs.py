@@ -2614,6 +2614,43 @@ def test_run_benchmarks_refuses_an_unknown_output():
                            f"{outputs}\n")
 
 
+def test_the_guides_frame_that_yields_is_its_measured_file():
+    """calibration.md's words on identify's defaults with a frame that yields: held to
+    ``identify_wrong_range_frame.json`` (the verdicts' counts, the misfits, the widening and
+    the braid angle's widest interval, what no misfit line names)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_range_frame.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    said = text[text.index("**A frame that yields.**"):]
+    said = said[:said.index("### What the intervals carry")]
+    assert record["command"] == (
+        "benchmarks/bench_identify_wrong_range.py --draws 6 --seed 20261601 --departures "
+        "\"frame compliance\" --out docs/measured/identify_wrong_range_frame.json")
+    draws = record["draws"]
+    count = {v: sum(d["verdict"] == v for d in draws) for v in ("covered", "warned", "SILENT")}
+    stiffness = [d["muscle"]["truth"]["frame_stiffness_N_per_mm"] for d in draws]
+    chi2 = [d["chi2_per_nu"] for d in draws]
+    widened = [float(re.search(r"widened by x(\S+) ", d["misfit_line"]).group(1))
+               for d in draws]
+    theta = [next(p for p in d["parameters"] if p["parameter"] == "theta0_deg")
+             for d in draws]
+    widest = max(theta, key=lambda p: p["ci_high"] - p["ci_low"])
+    assert all(d["misfit_line"] for d in draws)
+    assert (f"Of the {len(draws)} draws ({min(stiffness):.3g}-{max(stiffness):.3g} N/mm), "
+            f"{count['covered']} were covered, {count['warned']} warned and {count['SILENT']} "
+            f"`SILENT`: every fit misfits (chi2/nu {min(chi2):.3g}-{max(chi2):.3g}) and its "
+            f"intervals are widened x{min(widened):.3g}-{max(widened):.3g}, theta0's up to "
+            f"{widest['ci_low']:.1f}-{widest['ci_high']:.1f} deg") in said
+    sent = ("check the monitor's zero, the load cell's calibration, the muscle's wall and "
+            "braid; or fit its rest length")
+    assert all(sent in d["misfit_line"] and "frame" not in d["misfit_line"] for d in draws)
+    told = [d for d in draws if d["instrument_warning"]]
+    assert all(d["instrument_warning"].startswith("creep or load cell: ") for d in told)
+    assert (f"{len(told)} also print the creep-or-load-cell note (the other braid not taking "
+            "the creep's place on any)") in said
+
 def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
     """calibration.md's words on identify's defaults on a bench wrong several ways at once:
     held to ``identify_wrong_range.json`` (the verdicts' counts, the rest lengths' misfits and
