@@ -2715,6 +2715,30 @@ def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
             f"({sum(d['departure'] == 'gains' for d in told)} with both gains off, "
             f"{sum(d['departure'] == 'sliding braid' for d in told)} sliding sleeves), on "
             f"{len(first)} of them first in a verdict within the noise") in said
+
+    def rises(draw):
+        return [float(v) for v in re.search(
+            r"dropping the creep raises chi2 by (\S+) with the bonded braid, by (\S+) with the "
+            r"sliding one", draw["instrument_warning"]).groups()]
+
+    braid = [d for d in told if d["instrument_warning"].startswith("braid, creep or load cell")]
+    bonded, other = zip(*map(rises, braid), strict=True)
+    (within,) = [d for d in braid if ", but first, these runs cannot tell a sliding braid" in
+                 d["verdict_line"]]
+    assert all(d["departure"] == "sliding braid" for d in braid)
+    assert (f"On {len(braid)} of the sliding sleeves it names the braid first: dropping the "
+            f"creep raises chi2 by {min(bonded):.3g}-{max(bonded):.3g} with the bonded braid "
+            f"and by {min(other):.3g} to {max(other):.3g} with the sliding one") in said
+    assert f"seed {within['seed']}, within the noise, is told first" in said
+    (cell,) = [d for d in told if d["departure"] == "sliding braid" and d not in braid]
+    share = 1 - rises(cell)[1] / rises(cell)[0]
+    assert (f"The sixth, seed {cell['seed']}, is told the load cell's: the sliding braid takes "
+            f"{100 * share:.0f} % of its creep's place ({rises(cell)[0]:.3g} and "
+            f"{rises(cell)[1]:.3g})") in said
+    gain = next(d for d in told if d["seed"] == 20261619)
+    assert (f"as it does on seed 20261619's cell "
+            f"{100 * (1 - gain['muscle']['truth']['loadcell_gain']):.1f} % low") in said
+    assert 1 - rises(gain)[1] / rises(gain)[0] == pytest.approx(share, abs=0.005)
     (left_out,) = [d for d in draws if any(n.startswith("creep not identifiable from these "
                                                       "runs: ") for n in d["notes"])]
     note = next(n for n in left_out["notes"] if n.startswith("creep not identifiable"))
