@@ -806,9 +806,10 @@ def test_a_creep_the_other_braid_takes_away_names_the_braid_first():
     exact load cell: the bonded fit took 5.7 % of every force as a creep over before the holds
     start, and the note and the verdict told the user to calibrate the load cell. Dropped with
     the sliding braid, the creep leaves the runs' chi2 almost where it was (9.7, where the
-    bonded braid's rises by 2.1e4): the braid is named first, with the --braid to type; the cell second, for a bonded
-    braid. Where the other braid does not take the creep's place (a cell 1.75 % low, seed
-    20261601), the note says so and the cell comes first, as without a braid in doubt."""
+    bonded braid's rises by 2.1e4): the braid is named first, with the --braid to type; the
+    cell second, for a bonded braid. Where the other braid does not take the creep's place (a
+    cell 1.75 % low, seed 20261601), the note says so and the cell comes first, as without a
+    braid in doubt."""
     from mkm.identify.procedure import creep_or_gain
 
     runs, best, boot = floor_creep(0.0566)
