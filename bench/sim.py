@@ -31,7 +31,8 @@ pressure over the sensor's full scale) and a hysteresis ``monitor_hysteresis_bar
 rising and falling readings (the regulator holds that reading at the command, so the monitor
 reads the command while the true pressure is off by the sensor's error), or a monitor output
 frozen at ``monitor_stuck_bar`` whatever the pressure (the regulator still regulating on its own
-sensor).
+sensor). A frame of stiffness ``frame_stiffness_N_per_mm`` lets the muscle shorten by ``F / k``
+under its own pull: the static force is the model's at the length that pull leaves it.
 
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
@@ -98,7 +99,8 @@ def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
     mesh = s.fe_mesh if s.model == "axisym" else None
     top = max(fs, highest_pressure_bar(config))
     return _table(s.model, mesh, m.L0_mm, tuple(sorted(muscle_params(config).items())),
-                  *s.truth.geometry(m), m.eps, top, math.ceil((n - 1) * top / fs) + 1)
+                  *s.truth.geometry(m), m.eps, top, math.ceil((n - 1) * top / fs) + 1,
+                  s.truth.frame_stiffness_N_per_mm)
 
 
 def muscle_params(config) -> dict[str, float | str]:
@@ -137,11 +139,14 @@ def sensor_inverse_bar(truth, full_scale_bar: float, reading_bar: float) -> floa
 
 
 @functools.lru_cache(maxsize=32)
-def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, top_bar, n):
+def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, top_bar, n, stiffness_N_per_mm):
     model = _model(model_name, mesh, L0_mm, dict(truth))
     pressure_bar = np.linspace(0.0, top_bar, n)
     prediction = model.predict(pressure_bar, D0_mm, t0_mm, eps)
     force = np.where(prediction.valid, prediction.force_N, 0.0)
+    if stiffness_N_per_mm is not None:
+        force = _on_frame(model, pressure_bar, D0_mm, t0_mm, eps, L0_mm, stiffness_N_per_mm,
+                          force)
     # the force starts at the threshold with a kink: a knot there, or a hold just above it
     # would read a force interpolated across the kink
     threshold = np.asarray(prediction.extras.get("threshold_pressure_bar", np.nan), dtype=float)
@@ -154,6 +159,33 @@ def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, top_bar, n):
     force = np.maximum(force, 0.0)
     force.flags.writeable = False
     return pressure_bar, force
+
+
+def _on_frame(model, pressure_bar, D0_mm, t0_mm, eps, L0_mm, stiffness_N_per_mm, held_N,
+              lengths: int = 6):
+    """The static force [N] of a muscle held by a frame of ``stiffness_N_per_mm``: its length
+    shortens by ``F / k``, so the force at each pressure solves ``F = F_static(P, eps + F /
+    (k L0))``. ``held_N`` is the force at ``eps`` (a rigid frame's); the model is solved at
+    ``lengths - 1`` more eps up to where that force would put it and interpolated linearly in
+    eps between them. The static force falls with eps, so the root is unique in
+    ``[0, held_N]``: found by bisection. At the threshold there is no pull and no shortening:
+    the threshold stays the rigid frame's."""
+    per_N = 1.0 / (stiffness_N_per_mm * L0_mm)  # eps per newton
+    grid = np.linspace(eps, eps + float(np.max(held_N)) * per_N, lengths)
+    forces = [held_N] + [np.where(p.valid, p.force_N, 0.0) for p in
+                         (model.predict(pressure_bar, D0_mm, t0_mm, e) for e in grid[1:])]
+    table = np.maximum(np.array(forces), 0.0)  # (eps, pressure)
+    low, high = np.zeros_like(held_N), np.asarray(held_N, dtype=float).copy()
+    columns = np.arange(held_N.size)
+    for _ in range(60):  # the bracket halves each time: to 1e-18 of the largest force
+        middle = 0.5 * (low + high)
+        at = np.clip((eps + middle * per_N - grid[0]) / (grid[1] - grid[0]), 0.0,
+                     lengths - 1.0) if grid[-1] > grid[0] else np.zeros_like(middle)
+        k = np.minimum(at.astype(int), lengths - 2)
+        static = table[k, columns] + (at - k) * (table[k + 1, columns] - table[k, columns])
+        pulls_more = static > middle
+        low, high = np.where(pulls_more, middle, low), np.where(pulls_more, high, middle)
+    return 0.5 * (low + high)
 
 
 def _model(model_name, mesh, L0_mm, truth):
@@ -172,7 +204,8 @@ def describe_physics(config) -> dict:
     geometry = dict(zip(("D0_mm", "t0_mm"), s.truth.geometry(m), strict=True))
     departures = [f"true {k} {v:g} (declared {getattr(m, k):g})" for k, v in geometry.items()
                   if v != getattr(m, k)]
-    departures += [f"{k} {getattr(s.truth, k):g}" for k in INSTRUMENT_BOUNDS
+    departures += [f"{k} {getattr(s.truth, k):g}" for k in (*INSTRUMENT_BOUNDS,
+                                                            "frame_stiffness_N_per_mm")
                    if getattr(s.truth, k) is not None]
     return {
         "force_model": s.model, "force_model_params": model.params(),

@@ -70,7 +70,10 @@ class Truth:
     regulator holds that reading at the command, as an ITV does with its own sensor.
     ``monitor_stuck_bar``: the monitor output is frozen at this reading whatever the pressure
     (its output stage, wire or input stuck), while the regulator still holds its own sensor at
-    the command.
+    the command. The frame: ``frame_stiffness_N_per_mm``, the frame, fixtures and load cell
+    between the muscle's ends as one spring of that stiffness: the held length shortens by
+    ``F / k`` under the muscle's pull ``F`` (its eps grows by ``F / (k L0)``; a real frame is
+    never rigid, and the force falls steeply with eps).
 
     Unset (None): the declared value (``[muscle]``'s angle, rubber and gap where it gives
     them, else the calibrated angle, Silastic S, no gap; a bonded braid, the declared
@@ -94,6 +97,7 @@ class Truth:
     monitor_bow_bar: float | None = None
     monitor_hysteresis_bar: float | None = None
     monitor_stuck_bar: float | None = None
+    frame_stiffness_N_per_mm: float | None = None
 
     def check(self):
         from mkm.fem.limits import check_theta0, check_value
@@ -106,6 +110,9 @@ class Truth:
         for name, (low, high, unit, _) in INSTRUMENT_BOUNDS.items():
             if getattr(self, name) is not None:
                 within(f"sim.truth.{name}", getattr(self, name), low, high, unit)
+        if self.frame_stiffness_N_per_mm is not None:
+            within("sim.truth.frame_stiffness_N_per_mm", self.frame_stiffness_N_per_mm,
+                   *FRAME_STIFFNESS_BOUNDS_N_PER_MM, "N/mm")
 
     def model_params(self) -> dict[str, float | str]:
         """The set values the force model takes (angle, rubber, gap, braid)."""
@@ -124,6 +131,9 @@ class Truth:
         return float(value) if value is not None else INSTRUMENT_BOUNDS[name][3]
 
 
+#: a frame stiffness the simulator takes [N/mm]: from one that gives 1 mm under 1 N to about
+#: a steel block's
+FRAME_STIFFNESS_BOUNDS_N_PER_MM = (1.0, 1e7)
 #: the truths the force model takes; the true geometry; the instruments' truths: their bounds
 #: and unit, and the exact instrument's value
 MODEL_FIELDS = ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "braid")

@@ -2674,6 +2674,43 @@ def test_run_benchmarks_refuses_an_unknown_output():
                            f"{outputs}\n")
 
 
+def test_the_guides_frame_that_yields_is_its_measured_file():
+    """calibration.md's words on identify's defaults with a frame that yields: held to
+    ``identify_wrong_range_frame.json`` (the verdicts' counts, the misfits, the widening and
+    the braid angle's widest interval, what no misfit line names)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_range_frame.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    said = text[text.index("**A frame that yields.**"):]
+    said = said[:said.index("### What the intervals carry")]
+    assert record["command"] == (
+        "benchmarks/bench_identify_wrong_range.py --draws 6 --seed 20261601 --departures "
+        "\"frame compliance\" --out docs/measured/identify_wrong_range_frame.json")
+    draws = record["draws"]
+    count = {v: sum(d["verdict"] == v for d in draws) for v in ("covered", "warned", "SILENT")}
+    stiffness = [d["muscle"]["truth"]["frame_stiffness_N_per_mm"] for d in draws]
+    chi2 = [d["chi2_per_nu"] for d in draws]
+    widened = [float(re.search(r"widened by x(\S+) ", d["misfit_line"]).group(1))
+               for d in draws]
+    theta = [next(p for p in d["parameters"] if p["parameter"] == "theta0_deg")
+             for d in draws]
+    widest = max(theta, key=lambda p: p["ci_high"] - p["ci_low"])
+    assert all(d["misfit_line"] for d in draws)
+    assert (f"Of the {len(draws)} draws ({min(stiffness):.3g}-{max(stiffness):.3g} N/mm), "
+            f"{count['covered']} were covered, {count['warned']} warned and {count['SILENT']} "
+            f"`SILENT`: every fit misfits (chi2/nu {min(chi2):.3g}-{max(chi2):.3g}) and its "
+            f"intervals are widened x{min(widened):.3g}-{max(widened):.3g}, theta0's up to "
+            f"{widest['ci_low']:.1f}-{widest['ci_high']:.1f} deg") in said
+    sent = ("check the monitor's zero, the load cell's calibration, the muscle's wall and "
+            "braid; or fit its rest length")
+    assert all(sent in d["misfit_line"] and "frame" not in d["misfit_line"] for d in draws)
+    told = [d for d in draws if d["instrument_warning"]]
+    assert all(d["instrument_warning"].startswith("creep or load cell: ") for d in told)
+    assert (f"{len(told)} also print the creep-or-load-cell note (the other braid not taking "
+            "the creep's place on any)") in said
+
 def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
     """calibration.md's words on identify's defaults on a bench wrong several ways at once:
     held to ``identify_wrong_range.json`` (the verdicts' counts, the rest lengths' misfits and
@@ -2738,6 +2775,30 @@ def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
             f"({sum(d['departure'] == 'gains' for d in told)} with both gains off, "
             f"{sum(d['departure'] == 'sliding braid' for d in told)} sliding sleeves), on "
             f"{len(first)} of them first in a verdict within the noise") in said
+
+    def rises(draw):
+        return [float(v) for v in re.search(
+            r"dropping the creep raises chi2 by (\S+) with the bonded braid, by (\S+) with the "
+            r"sliding one", draw["instrument_warning"]).groups()]
+
+    braid = [d for d in told if d["instrument_warning"].startswith("braid, creep or load cell")]
+    bonded, other = zip(*map(rises, braid), strict=True)
+    (within,) = [d for d in braid if ", but first, these runs cannot tell a sliding braid" in
+                 d["verdict_line"]]
+    assert all(d["departure"] == "sliding braid" for d in braid)
+    assert (f"On {len(braid)} of the sliding sleeves it names the braid first: dropping the "
+            f"creep raises chi2 by {min(bonded):.3g}-{max(bonded):.3g} with the bonded braid "
+            f"and by {min(other):.3g} to {max(other):.3g} with the sliding one") in said
+    assert f"seed {within['seed']}, within the noise, is told first" in said
+    (cell,) = [d for d in told if d["departure"] == "sliding braid" and d not in braid]
+    share = 1 - rises(cell)[1] / rises(cell)[0]
+    assert (f"The sixth, seed {cell['seed']}, is told the load cell's: the sliding braid takes "
+            f"{100 * share:.0f} % of its creep's place ({rises(cell)[0]:.3g} and "
+            f"{rises(cell)[1]:.3g})") in said
+    gain = next(d for d in told if d["seed"] == 20261619)
+    assert (f"as it does on seed 20261619's cell "
+            f"{100 * (1 - gain['muscle']['truth']['loadcell_gain']):.1f} % low") in said
+    assert 1 - rises(gain)[1] / rises(gain)[0] == pytest.approx(share, abs=0.005)
     (left_out,) = [d for d in draws if any(n.startswith("creep not identifiable from these "
                                                       "runs: ") for n in d["notes"])]
     note = next(n for n in left_out["notes"] if n.startswith("creep not identifiable"))

@@ -85,6 +85,12 @@ UNTIMED_CREEP_FRACTION = 0.03
 TERM_START = {"hysteresis_fraction": 0.02, "creep_fraction": 0.01, "gap_mm": 0.2}
 #: below this share of the force a creep has no time constant the runs can tell
 CREEP_IDENTIFIABLE = 1e-3
+#: what each braid of :data:`mkm.fem.options.BRAIDS` is, as a note says it
+BRAID_SAID = {"bonded": "a braid glued to its tube", "sliding": "a sleeve free to slide on "
+              "its tube"}
+#: a creep over before the holds start is said to be the other braid's first where that braid
+#: without it takes away at least this share of the rise of chi2 that dropping it makes
+BRAID_TAKES_CREEP = 0.9
 #: a creep over before the holds start is said to be the load cell's gain as well only beyond
 #: this many times the cell's declared tolerance: a share of one or two tolerances is also what
 #: the model's form leaves for a creep to take (a 0.14 % creep at 1 s on an exact cell,
@@ -460,7 +466,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                                        if n != "c01_fraction"},  # the ratio tested again
             given_up=given_up)
     # judged on the bootstrap's own interval: a misfit's widening stretches any to its bound
-    cautions = [c for c in (creep_or_gain(runs, best, boot),) if c]
+    cautions = []
+    if creep_at_floor(runs, best, boot):
+        cautions.append(creep_or_gain(runs, best, boot, None if braid_skipped(fe, best, braid)
+                                      else _without_creep(source, fe, runs, best)))
     boot = goodness.widen(boot, best, fitness)
     notify("model-form terms: the FE model at the optimum (and the other braid)")
     if terms is None:
@@ -566,25 +575,50 @@ def terms_at_bounds(runs, best) -> list[str]:
     return lines
 
 
-def creep_or_gain(runs, best, boot) -> dict | None:
-    """The warning where the runs cannot tell the fitted creep from the load cell's gain: a
-    creep whose time constant is at the shortest searched, or whose bootstrap interval (before
-    a misfit widens it) reaches it, may be over before the holds start, and then every held
-    force reads as a cell reading that share low from its first sample would
-    (``bench_identify_wrong_range.py`` seed 20261601: a cell 1.75 % low fitted as a 1.73 %
-    creep at 1 s, within the noise, theta0 0.03 deg outside its interval). None where no creep
-    was fitted, or its share is within :data:`CREEP_OR_GAIN_TOLERANCES` times the cell's
-    declared tolerance or below :data:`CREEP_IDENTIFIABLE`."""
+def creep_at_floor(runs, best, boot) -> bool:
+    """Whether the fitted creep may be over before the holds start and is too large to be the
+    model's form: its time constant, or its bootstrap interval (before a misfit widens it), at
+    the shortest searched, and its share beyond :data:`CREEP_OR_GAIN_TOLERANCES` times the
+    load cell's declared tolerance (and :data:`CREEP_IDENTIFIABLE`)."""
     if "log_tau" not in best.names:
-        return None
-    share = best.values["creep_fraction"]
-    tolerance = max(r.sensitivity_tolerance for r in runs)
+        return False
     bounds = best.bounds["log_tau"]
-    low, high = boot["interval"]["log_tau"]
+    low, _ = boot["interval"]["log_tau"]
     short = any(fitting.at_edge(v, bounds) and v - bounds[0] <= bounds[1] - v
                 for v in (best.values["log_tau"], low))
-    if not short or share < max(CREEP_IDENTIFIABLE, CREEP_OR_GAIN_TOLERANCES * tolerance):
-        return None
+    tolerance = max(r.sensitivity_tolerance for r in runs)
+    return short and best.values["creep_fraction"] >= max(
+        CREEP_IDENTIFIABLE, CREEP_OR_GAIN_TOLERANCES * tolerance)
+
+
+def _without_creep(source, fe: ModelStatic, runs, best) -> dict:
+    """The creep dropped with the braid fitted and with the other one
+    (:func:`without_creep`): the braids' names and the rise of chi2 with each."""
+    other = _other_braid(fe)
+    return {"braid": _braid_of(other), "fitted_braid": _braid_of(fe),
+            "chi2_rise": without_creep(source, fe, runs, best, other),
+            "fitted_braid_chi2_rise": without_creep(source, fe, runs, best, fe)}
+
+
+def creep_or_gain(runs, best, boot, other_braid: dict | None = None) -> dict:
+    """The warning where the runs cannot tell the fitted creep from the load cell's gain
+    (:func:`creep_at_floor`): a creep over before the holds start lowers every held force as
+    a cell reading that share low from its first sample does (``bench_identify_wrong_range.py``
+    seed 20261601: a cell 1.75 % low fitted as a 1.73 % creep at 1 s, within the noise,
+    theta0 0.03 deg outside its interval).
+
+    ``other_braid`` (:func:`_without_creep`, where the braid is in doubt): where the other
+    braid without the creep takes away at least :data:`BRAID_TAKES_CREEP` of the rise of chi2
+    that dropping the creep with the fitted braid makes, the braid is named first: a sleeve
+    sliding on its tube pulls less than a bonded braid by a share of every force, which a fit
+    with the bonded braid takes as such a creep (``bench_identify_wrong_range.py`` seed
+    20261615: a sliding sleeve fitted as a 5.7 % creep at 1 s, within the noise, on an exact
+    cell), and a braid is a likelier cause than a cell that many times off its tolerance.
+    Where it does not, the note says so."""
+    share = best.values["creep_fraction"]
+    tolerance = max(r.sensitivity_tolerance for r in runs)
+    low, high = boot["interval"]["log_tau"]
+    bounds = best.bounds["log_tau"]
     tau_s, shortest_s = float(np.exp(best.values["log_tau"])), float(np.exp(bounds[0]))
     percent = f"{100 * share:.2g} %"
     check = ("check the calibration of the load cell that recorded them"
@@ -592,18 +626,43 @@ def creep_or_gain(runs, best, boot) -> dict | None:
              "calibrate-loadcell)")
     advice = (f"if this muscle is not expected to creep by {percent}, {check} and identify "
               "again")
-    said = (f"creep or load cell: the fitted creep, {percent} of the force with creep_tau_s "
-            f"{tau_s:.3g} s (the runs allow {shortest_s:.4g} s, the shortest searched), may be "
-            "over before the holds start, and such a creep is, to these runs, the load cell "
-            f"reading {percent} low from its first sample (its declared tolerance "
-            f"+-{100 * tolerance:g} %): they cannot tell the two apart; {advice}")
-    return {"what": "creep or load cell gain", "creep_fraction": share, "creep_tau_s": tau_s,
-            "creep_tau_s_bootstrap_ci": [float(v) for v in np.exp([low, high])],
-            "loadcell_reads_low_fraction": share, "sensitivity_tolerance": tolerance,
-            "verdict": (f"these runs cannot tell a creep of {percent} over before the holds "
-                        f"start from a load cell reading {percent} low (the note above): "
-                        f"{advice}"),
-            "said": said}
+    creep = (f"the fitted creep, {percent} of the force with creep_tau_s {tau_s:.3g} s (the "
+             f"runs allow {shortest_s:.4g} s, the shortest searched), may be over before the "
+             "holds start, and such a creep is, to these runs, the load cell reading "
+             f"{percent} low from its first sample (its declared tolerance "
+             f"+-{100 * tolerance:g} %)")
+    warning = {"what": "creep or load cell gain", "creep_fraction": share, "creep_tau_s": tau_s,
+               "creep_tau_s_bootstrap_ci": [float(v) for v in np.exp([low, high])],
+               "loadcell_reads_low_fraction": share, "sensitivity_tolerance": tolerance}
+    if other_braid is None:
+        return {**warning, "verdict": (
+            f"these runs cannot tell a creep of {percent} over before the holds start from a "
+            f"load cell reading {percent} low (the note above): {advice}"), "ready_if": "if it is",
+            "said": f"creep or load cell: {creep}: they cannot tell the two apart; {advice}"}
+    other, fitted = other_braid["braid"], other_braid["fitted_braid"]
+    rises = (f"dropping the creep raises chi2 by {other_braid['fitted_braid_chi2_rise']:.3g} "
+             f"with the {fitted} braid, by {other_braid['chi2_rise']:.3g} with the {other} one "
+             "(linearised refits)")
+    warning["other_braid"] = other_braid
+    if other_braid["chi2_rise"] > (1 - BRAID_TAKES_CREEP) * other_braid[
+            "fitted_braid_chi2_rise"]:
+        return {**warning, "verdict": (
+            f"these runs cannot tell a creep of {percent} over before the holds start from a "
+            f"load cell reading {percent} low (the note above): {advice}"), "ready_if": "if it is",
+            "said": (f"creep or load cell: {creep}: they cannot tell the two apart, and the "
+                     f"{other} braid does not take the creep's place ({rises}); {advice}")}
+    braid_advice = (f"if the muscle's braid is {other} ({BRAID_SAID[other]}), identify again "
+                    f"with --braid {other}; if it is {fitted} and this muscle is not expected "
+                    f"to creep by {percent}, {check} and identify again")
+    return {**warning, "what": "braid, creep or load cell gain", "verdict": (
+        f"these runs cannot tell a {other} braid from a creep of {percent} over before the "
+        f"holds start or a load cell reading {percent} low (the note above): {braid_advice}"),
+        "ready_if": f"if it is {fitted} and does creep so",
+        "said": (f"braid, creep or load cell: {creep}; but the {other} braid follows them "
+                 f"without the creep ({rises}): {BRAID_SAID[other]} pulls a share of every "
+                 f"force {'less' if other == 'sliding' else 'more'} than {BRAID_SAID[fitted]}, "
+                 "as that creep does, and is a likelier cause than a load cell "
+                 f"{share / tolerance:.3g} times its declared tolerance off; {braid_advice}")}
 
 
 def _rest_length_hint(runs, fe, best, fitness, groups) -> list[str]:
@@ -755,14 +814,9 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
             "kind": "symmetric", "what": f"{fe.name} minus {source.name} at the optimum",
             "shift": _shift(source, runs, best,
                             _minus(fe_tables, source.tables(runs, values)))}
-    if braid is not None:
-        terms["braid"] = {"skipped": f"the braid is given ({braid})"}
-    elif "braid" not in fe.spec.entry.parameters:
-        terms["braid"] = {"skipped": f"{fe.name} has no braid option"}
-    elif "gap_mm" in best.names:
-        # the sliding sleeve takes no gap: there is no other braid's estimate to hold
-        terms["braid"] = {"skipped": "a gap is fitted, and a gap is modelled with the bonded "
-                                     "braid only"}
+    skipped = braid_skipped(fe, best, braid)
+    if skipped:
+        terms["braid"] = {"skipped": skipped}
     else:
         alternative = _other_braid(fe)
         fe_tables = fe_tables or fe.tables(runs, values)
@@ -781,10 +835,27 @@ def model_form_terms(source, fe: ModelStatic, runs, best, braid: str | None) -> 
     return terms
 
 
+def braid_skipped(fe: ModelStatic, best, braid: str | None) -> str | None:
+    """Why the other braid is not a model-form term of this fit (the braid given, a model
+    without the option, a fitted gap), or None where the runs leave the braid in doubt."""
+    if braid is not None:
+        return f"the braid is given ({braid})"
+    if "braid" not in fe.spec.entry.parameters:
+        return f"{fe.name} has no braid option"
+    if "gap_mm" in best.names:
+        # the sliding sleeve takes no gap: there is no other braid's estimate to hold
+        return "a gap is fitted, and a gap is modelled with the bonded braid only"
+    return None
+
+
+def _braid_of(fe: ModelStatic) -> str:
+    """The braid ``fe`` models (its spec's, else the default)."""
+    return dict(fe.spec.params).get("braid", BRAIDS[0])
+
+
 def _other_braid(fe: ModelStatic) -> ModelStatic:
     """``fe`` with the other braid of :data:`mkm.fem.options.BRAIDS`."""
-    current = dict(fe.spec.params).get("braid", BRAIDS[0])
-    other = next(b for b in BRAIDS if b != current)
+    other = next(b for b in BRAIDS if b != _braid_of(fe))
     return ModelStatic(fe.spec.with_params(braid=other).text, fe.runner, fe.cache_dir)
 
 
@@ -801,6 +872,28 @@ def other_braid_excess(source, fe: ModelStatic, runs, one_scale, free) -> float:
                                                                   differences))
     variance = free.rss / max(free.n - len(free.names), 1)
     return float((np.sum((one_scale.w * r) ** 2) - free.rss) / variance)
+
+
+def without_creep(source, fe: ModelStatic, runs, best, braid: ModelStatic) -> float:
+    """How far ``best``, which fitted a creep, refitted with ``braid``'s static force and no
+    creep stays above it, in units of ``best``'s residual variance (the likelihood-ratio
+    test's): the static force changed to ``braid``'s at the optimum (one FE sweep per run
+    and braid; none where ``braid`` is ``fe``), the creep set to 0 (the force is linear in its
+    share), the other parameters refitted by one linearised step."""
+    differences = ([(grid, np.zeros_like(F)) for grid, F in fe.tables(runs, best.values)]
+                   if braid is fe else _minus(braid.tables(runs, best.values),
+                                              fe.tables(runs, best.values)))
+    base = fitting.traces(source, runs, best.values)
+    moved = fitting.traces(Corrected(source, differences), runs,
+                           {**best.values, "creep_fraction": 0.0})
+    holds = [run.hold >= 0 for run in runs]
+    r = best.w * (best.residual_N + np.concatenate(
+        [(m - b)[h] for m, b, h in zip(moved, base, holds, strict=True)]))
+    J = best.weighted_jacobian[:, [i for i, n in enumerate(best.names)
+                                   if n not in ("creep_fraction", "log_tau")]]
+    r = r - J @ np.linalg.lstsq(J, r, rcond=None)[0]
+    variance = best.rss / max(best.n - len(best.names), 1)
+    return float((np.sum(r ** 2) - best.rss) / variance)
 
 
 def surrogate_misfit(source, fe: ModelStatic, runs, best) -> bool:

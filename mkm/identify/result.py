@@ -442,7 +442,7 @@ class Identification:
                 return (f"verdict: the model follows these runs within their noise (chi2/nu "
                         f"{g.reduced:.3g}), but first, "
                         + "; ".join(w["verdict"] for w in self.instrument_warnings)
-                        + f"; if it is, {ready}")
+                        + f"; {self.instrument_warnings[-1]['ready_if']}, {ready}")
             return (f"verdict: the model follows these runs within their noise (chi2/nu "
                     f"{g.reduced:.3g}): {ready}")
         return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"

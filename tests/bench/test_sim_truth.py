@@ -86,7 +86,8 @@ def test_the_truth_is_recorded_in_the_simulator_settings(config, tmp_path):
                             "loadcell_gain": None, "loadcell_drift_N_per_min": None,
                             "monitor_gain": None, "monitor_offset_bar": None,
                             "monitor_bow_bar": None,
-                            "monitor_hysteresis_bar": None, "monitor_stuck_bar": None}
+                            "monitor_hysteresis_bar": None, "monitor_stuck_bar": None,
+                            "frame_stiffness_N_per_mm": None}
     assert sim["physics"]["instruments"]["monitor_stuck_bar"] is None  # a monitor that reads
     assert sim["physics"]["force_model_params"]["theta0_deg"] == 31.5
     assert "[sim.truth]\ntheta0_deg = 31.5" in (result.path / "config.toml").read_text("utf-8")
@@ -399,3 +400,27 @@ def test_unset_truth_is_the_muscle_the_configuration_declares(config):
     p, f = static_force_table(true)
     assert np.interp(1.0, p, f) == pytest.approx(float(chou_hannaford(1.0, 68.0, 0.0, 19.0)),
                                                  rel=1e-6)
+
+
+def test_a_frame_that_yields_holds_the_muscle_where_its_pull_leaves_it(config):
+    """A frame of 300 N/mm between the muscle's ends: the packaged 30 mm muscle pulls about
+    760 N at 2 bar on a rigid one, so it shortens by about 2.5 mm of its 282 mm and pulls
+    the thick-wall force at that length, which the model gives at the eps the pull leaves
+    (the table interpolates between six lengths: within 0.05 % of the force). At the threshold
+    it pulls nothing and the frame gives nothing: the threshold is the rigid frame's."""
+    m = config.muscle
+    c = quiet(config, model="thickwall", truth={"frame_stiffness_N_per_mm": 300.0})
+    pressure, force = static_force_table(c)
+    _, rigid = static_force_table(quiet(config, model="thickwall"))
+    model = make_model("thickwall", L0_mm=m.L0_mm)
+    at = int(np.argmin(np.abs(pressure - 2.0)))
+    shortened = m.eps + force[at] / (300.0 * m.L0_mm)
+    assert force[at] == pytest.approx(float(model.predict(2.0, m.D0_mm, m.t0_mm, shortened)
+                                            .force_N), rel=5e-4)
+    assert 2.0 < force[at] / 300.0 < 3.0  # mm
+    assert force[at] < 0.97 * rigid[at]
+    assert np.argmax(force > 0) == np.argmax(rigid > 0)
+    assert "frame_stiffness_N_per_mm 300" in describe_physics(c)["summary"]
+    with pytest.raises(ValueError, match=r"^sim.truth.frame_stiffness_N_per_mm=0 is invalid: "
+                                         r"expected 1 to 1e\+07 N/mm$"):
+        config.replace(sim={"truth": {"frame_stiffness_N_per_mm": 0.0}})
