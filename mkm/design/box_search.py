@@ -841,6 +841,17 @@ def _near_lock(req: Requirement, theta0_low_deg: float, hints: Hints | None = No
             f"({(hints or Hints()).name('theta0_deg')}), whose lock lies at a larger eps")
 
 
+def _slack(req: Requirement, hints: Hints | None = None) -> str:
+    """The clause a short requirement's part ends with where the closest design pulls nothing:
+    slack, below the pressure at which it starts to pull at that eps (which grows with the
+    wall's stiffness over the tube's width: Klute and Hannaford's threshold)."""
+    hints = hints or Hints()
+    return (f": at {req.pressure_bar:g} bar it is slack, below the pressure at which a muscle "
+            f"held at eps {req.eps:g} starts to pull: a thinner wall ({hints.name('t0_mm')}), "
+            f"a wider tube ({hints.name('D0_mm')}) or a softer rubber "
+            f"({hints.name('rubber')}) lowers that pressure, as does asking for a lower eps")
+
+
 def _angle_unsearched(result: Search, may: str = "hold a narrower muscle") -> str:
     """The clause an infeasible search ends with where it held the braid angle at one value: at
     a given width the force depends on the angle both ways (a smaller one pulls more per braid
@@ -887,6 +898,8 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         lock = (_near_lock(req, result.constraints["theta0_deg"][0], result.hints)
                 if short > 0 else "")
         near_lock |= bool(lock)
+        if short > 0 and not lock and force == 0.0:
+            lock = _slack(req, result.hints)
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force")

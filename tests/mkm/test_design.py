@@ -200,6 +200,29 @@ def test_an_infeasible_design_on_the_edge_of_the_box_says_a_larger_box_might_do(
                                            err), err
 
 
+def test_a_requirement_below_the_closest_designs_threshold_says_it_is_slack():
+    """5 N at 0.1 bar held at eps 0.15 said only 'short by 5 N (predicted 0 N)': every tube of
+    the box (30-50 mm, walls 2-4 mm) is slack there, its Klute-Hannaford threshold at that eps
+    0.23-0.70 bar. The part says so and what lowers the threshold, each way it does (a thinner
+    wall, a wider tube, a softer rubber, a lower eps)."""
+    with pytest.raises(ValueError, match="infeasible") as info:
+        search(["5N@0.1bar,eps=0.15"])
+    message = str(info.value)
+    D0, t0 = map(float, re.search(r"closest: D0 = ([\d.]+) mm, t0 = ([\d.]+) mm",
+                                  message).groups())
+    assert klute_hannaford_threshold_pressure(D0, t0, 0.15, 32.99) > 0.2  # slack at 0.1 bar
+    assert ("requirement 1 (5N@0.1bar,eps=0.15) short by 5 N (predicted 0 N): at 0.1 bar it is "
+            "slack, below the pressure at which a muscle held at eps 0.15 starts to pull: a "
+            "thinner wall (--t0), a wider tube (--D0) or a softer rubber (--rubber) lowers that "
+            "pressure, as does asking for a lower eps;") in message
+    # the threshold falls each way the clause says
+    P = klute_hannaford_threshold_pressure
+    assert P(D0, t0 / 2, 0.15, 32.99) < P(D0, t0, 0.15, 32.99)
+    assert P(1.5 * D0, t0, 0.15, 32.99) < P(D0, t0, 0.15, 32.99)
+    assert P(D0, t0, 0.15, 32.99, C10_MPa=0.05, C01_MPa=0.0) < P(D0, t0, 0.15, 32.99)
+    assert P(D0, t0, 0.05, 32.99) < P(D0, t0, 0.15, 32.99)
+
+
 def test_an_infeasible_requirement_near_the_braid_lock_says_so_and_what_to_change(mkm_run,
                                                                                   tmp_path):
     # eps 0.3 at the default braid angle is 96 % of the way to its lock (eps_max 0.312), where
