@@ -104,6 +104,9 @@ EXCEL_MAX_ROWS = 1_048_575  # below the header row
 EXPORT_SHEETS = ("steps", "samples", "metadata")
 #: ``--tare`` and ``--vented``: found in the data (auto), none, or a value given
 ZERO_CHOICES = ("auto", "none")
+#: ``--tare linear``: a time series' zero taken at its rests before the rise and after the vent
+#: that ends it, joined by a line in time (a load cell that drifted through the record)
+LINEAR_TARE = "linear"
 #: the name (and the table's suffix) of the copy of a table kept in the run folder where its
 #: rows are no run folder's samples (a record without time, binned), or of mkm export's
 #: workbook that carried that table in its sheet of this name
@@ -171,12 +174,14 @@ ZERO_EXAMPLES = {"N": "1.5N or 0.2kgf", "bar": "0.02bar or 1013mbar"}
 
 
 def parse_zero(text: str | float | None, option: str, unit: str) -> str | float:
-    """``auto``, ``none`` or a number within :data:`ZERO_LIMITS`, typed as the other options'
-    (``--tare 3.2``, ``1,5``, ``0.2kgf``; ``--vented 0.6``, ``1013mbar``)."""
-    if text is None or text in ZERO_CHOICES:
+    """``auto``, ``none`` (``--tare``: or ``linear``) or a number within :data:`ZERO_LIMITS`,
+    typed as the other options' (``--tare 3.2``, ``1,5``, ``0.2kgf``; ``--vented 0.6``,
+    ``1013mbar``)."""
+    choices = (*ZERO_CHOICES, LINEAR_TARE) if option == "--tare" else ZERO_CHOICES
+    if text is None or text in choices:
         return text or "auto"
-    value = parse_number(str(text), option, unit, f"auto, none or a number in {unit}, or one "
-                         f"with a unit such as {ZERO_EXAMPLES[unit]}")
+    value = parse_number(str(text), option, unit, f"{', '.join(choices)} or a number in "
+                         f"{unit}, or one with a unit such as {ZERO_EXAMPLES[unit]}")
     low, high, why = ZERO_LIMITS.get(option, (-math.inf, math.inf, ""))
     if not low <= value <= high:
         raise ValueError(f"{option} {text!r} is invalid: expected a number in [{low:g}, "
@@ -904,7 +909,36 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
         return []
     return [f"the force vented at the end reads {drift:+.3g} N from the zero at the start "
             f"(beyond the rests' noise, {noise:.2g} N): a load cell that drifted, or a muscle "
-            "that did not come back; every step keeps the start's zero"]
+            "that did not come back; every step keeps the start's zero: where the cell drifted "
+            f"(the muscle vented pulls nothing), --tare {LINEAR_TARE} takes the zero linearly "
+            "in time between the two rests"]
+
+
+def _linear_tare(group: _Group, time_s, pressure, force, rest, handling):
+    """``--tare linear``: the zero of a time series whose load cell drifted, the mean force of
+    its rest before the rise and of the vented rest that ends it, joined by a line in time
+    (each at its rest's mean time). Returns the start's zero [N] and the zero at every sample;
+    ``ValueError`` where the record lacks a clock or either rest."""
+    if time_s is None:
+        raise ValueError(f"{group.named}: --tare {LINEAR_TARE} needs a time column: expected a "
+                         "time series, or --tare auto, none or a value")
+    end = series.end_rest(time_s, pressure, force)
+    if (rest.pressure_bar > series.VENTED_THRESHOLD_BAR or end.rest.start <= rest.rest.stop
+            or end.pressure_bar > series.VENTED_THRESHOLD_BAR or not end.settled):
+        raise ValueError(f"{group.named}: --tare {LINEAR_TARE} needs a vented rest before the "
+                         "pressure rises and a settled vented rest that ends the record: "
+                         "expected a record that starts and ends vented, or --tare auto, none "
+                         "or a value")
+    t_start = float(np.mean(time_s[rest.rest]))
+    t_end = float(np.mean(time_s[end.rest]))
+    slope = (end.force_N - rest.force_N) / (t_end - t_start)
+    handling["tare_std_N"] = rest.std_N
+    handling["zero_drift_N"] = end.force_N - rest.force_N
+    handling["tare"] = (f"linear in time: {rest.force_N:.4g} N at {t_start:.4g} s (the rest "
+                        f"before the pressure rises) to {end.force_N:.4g} N at {t_end:.4g} s "
+                        "(the vented rest that ends the record), a drift of "
+                        f"{end.force_N - rest.force_N:+.3g} N")
+    return rest.force_N, rest.force_N + slope * (np.asarray(time_s) - t_start)
 
 
 def _never_rises(pressure_bar: np.ndarray) -> bool:
@@ -1110,8 +1144,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR and vented_rows.any():
             closing_rows = vented_rows
     drift: list[str] = []
+    line = None
     if tare == "none":
         zero, handling["tare"] = 0.0, "none"
+    elif tare == LINEAR_TARE:
+        zero, line = _linear_tare(group, time_s if timed else None, pressure, force,
+                                  rest if timed else None, handling)
     elif closing_rows is not None:
         zero = float(np.mean(force[closing_rows]))
         handling["tare"] = (f"mean force of the {int(closing_rows.sum())} row(s) at 0 bar where "
@@ -1165,7 +1203,10 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                              f"{force_sign * float(np.nanmax(force)):g} N: expected the force "
                              "read at 0 bar")
     handling["tare_N"] = zero
-    if zero:
+    if line is not None:
+        force = force - line
+        notes.append(f"tare {zero:.4g} N at the start subtracted, then {handling['tare']}")
+    elif zero:
         force = force - zero
         notes.append(f"tare {zero:.4g} N subtracted ({handling['tare']})")
     notes.extend(drift)

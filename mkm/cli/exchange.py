@@ -104,13 +104,15 @@ def register(subparsers) -> None:
                      "sheet or group with a pressure and a force column, one run each)")
     imp.add_argument("--muscle", default=None, metavar="NAME",
                      help="the muscle to import where the table's muscle column holds several")
-    imp.add_argument("--tare", default="auto", metavar="auto|none|N",
+    imp.add_argument("--tare", default="auto", metavar="auto|none|linear|N",
                      help="the force's zero: a time series' mean force before its pressure "
                      "rises (or over the vented rest that ends it, where the logging began as "
                      "the pressure rose), a step table's force at the lowest pressure of its "
                      "rising branch (auto, the default; only when that pressure is 0 bar, else "
-                     "at the 0 bar rows that end a sweep), none, or a value [N] (or with its "
-                     "unit: 0.2kgf)")
+                     "at the 0 bar rows that end a sweep), none, linear (a time series' "
+                     "zero taken at its rests before the rise and after the closing vent, "
+                     "joined by a line in time: a load cell that drifted), or a value [N] (or "
+                     "with its unit: 0.2kgf)")
     imp.add_argument("--vented", default="auto", metavar="auto|none|BAR",
                      help="what the pressure reads vented, subtracted from a time series (or a "
                      "record without its time): "

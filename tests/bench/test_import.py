@@ -860,6 +860,47 @@ def test_a_zero_that_drifted_by_the_end_of_the_record_is_said(drift_N, tmp_path,
     assert ("the force vented at the end reads" in err) == (drift_N > 0)
 
 
+def test_a_zero_that_drifted_linearly_is_taken_out_with_tare_linear(tmp_path, mkm_cli):
+    # a load cell drifting 3 N through the record: with the start's zero every step keeps its
+    # share of the drift (up to 2.8 N at the end) and the note gave no remedy; --tare linear
+    # takes the zero at both rests, joined by a line in time
+    frame, _, truth = _ramp()
+    t = frame["t (s)"].to_numpy()
+    frame["Force (N)"] += 3.0 * t / t[-1]
+    path = tmp_path / "ramp.csv"
+    frame.to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
+    assert "--tare linear takes the zero linearly in time between the two rests" in err
+    start = run.samples["force_N"].to_numpy() - truth
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%", "--tare", "linear")
+    recorded = run.meta.imported_from
+    assert "then linear in time: " in err and recorded["tare"].startswith("linear in time")
+    # the rests' means at their mid-times (1 s and 22.5 s): 0.037 N of standard error each
+    assert recorded["tare_N"] == pytest.approx(7.5 + 3.0 * 1.0 / t[-1], abs=4 * 0.037)
+    assert recorded["zero_drift_N"] == pytest.approx(3.0 * 21.5 / t[-1], abs=4 * 0.037)
+    left = run.samples["force_N"].to_numpy() - truth
+    # what is left of the drift is the line's error: within 4 standard errors of each rest
+    # over the record, against the start's zero's 2.8 N at the end (noise 0.3 N per sample)
+    assert abs(np.mean(left[-100:])) < 4 * 0.037 * 2 < abs(np.mean(start[-100:])) - 2.5
+    assert abs(np.mean(left[1100:1300])) < 4 * 0.037 * 2  # at the top of the ramp
+    # no rests, no line: one line, exit 2
+    ends_high = tmp_path / "ends_high.csv"
+    frame[frame["t (s)"] < 17.0].to_csv(ends_high, index=False)
+    code, _, err = mkm_cli(["import", str(ends_high), *MUSCLE, "--eps", "12.2%", "--tare",
+                            "linear", "--out", str(tmp_path / "runs2")])
+    assert code == 2 and err.count("\n") == 1 and (
+        "--tare linear needs a vented rest before the pressure rises and a settled vented rest "
+        "that ends the record") in err, err
+    table = tmp_path / "steps.csv"
+    table.write_text("P [bar],F [N]\n0,0\n1,100\n2,200\n0,0\n", encoding="utf-8")
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "12.2%", "--tare",
+                            "linear", "--out", str(tmp_path / "runs3")])
+    assert code == 2 and "--tare linear needs a time column" in err, err
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "12.2%", "--tare",
+                            "lin", "--out", str(tmp_path / "runs3")])
+    assert code == 2 and "expected auto, none, linear or a number in N" in err, err
+
+
 def test_a_step_table_with_a_time_per_row_is_a_step_table(tmp_path, mkm_cli):
     # a logger that writes each hold's mean with its time, 30 s apart: 'no step found in the
     # time series', since no hold had the samples of a plateau
@@ -2352,8 +2393,8 @@ def test_a_given_zero_that_is_no_number_says_what_is_taken(tmp_path, mkm_cli):
     path.write_text("P (bar),F (N)\n0,0\n1,100\n")
     code, out, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0.1", "--tare", "zero"])
     assert code == 2 and err == ("mkm import: error: --tare='zero' is not a number: expected "
-                                 "auto, none or a number in N, or one with a unit such as 1.5N "
-                                 "or 0.2kgf\n")
+                                 "auto, none, linear or a number in N, or one with a unit such "
+                                 "as 1.5N or 0.2kgf\n")
 
 
 @pytest.mark.parametrize("text, expected", [
