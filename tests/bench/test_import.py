@@ -2007,6 +2007,29 @@ def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, m
     assert again.meta.sequence == run.meta.sequence
 
 
+def test_an_exported_runs_negative_readings_import_back_as_numbers(config, tmp_path, mkm_cli):
+    """The export writes run.json's values as text, and a negative one starts like a formula:
+    the apostrophe that guards it is the export's, not the value's. A monitor that reads below
+    0 bar vented (fresh draw of promises18, seed 2026120722: -0.00107 bar) came back as the
+    text "'-0.00107421875", and mkm identify refused the run imported back (could not convert
+    string to float)."""
+    from mkm.bench.run import acquire
+    from mkm.identify.runs import load_run_data
+
+    low = config.replace(sim={"loadcell_offset_V": -0.02,
+                              "truth": {"monitor_offset_bar": -0.01}})
+    run = load_run(acquire(low, out_root=tmp_path / "bench", notify=lambda message: None).path)
+    assert run.meta.tare["monitor_vented_bar"] < 0 and run.meta.tare["drift_N"] != 0
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), _ = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert again.meta.tare == run.meta.tare
+    assert again.meta.calibration == run.meta.calibration
+    assert again.meta.hardware == run.meta.hardware
+    vented = load_run_data(again.path).vented_bar
+    assert vented == load_run_data(run.path).vented_bar and vented[0] < 0
+
+
 def test_an_exported_run_that_was_cut_short_stays_marked_with_why(config, tmp_path, mkm_cli):
     from mkm.bench.run import acquire
 
