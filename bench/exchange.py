@@ -647,6 +647,8 @@ def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
             index=False)]
         notes.insert(0, f"{len(samples)} samples")
         shape = "export"
+        meta.reason = (f"imported from {path.name}: mkm export's workbook, its steps and "
+                       "samples as recorded")
     for part in ("calibration", "tare", "hardware", "sequence"):
         restored = _unflattened(known, part)
         if restored:

@@ -1993,6 +1993,9 @@ def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, m
     assert code == 0, err
     (again,), err = _import(mkm_cli, tmp_path / "run.xlsx")
     assert f"the exported run's own, with its samples; {len(run.samples)} samples" in err
+    # its samples are said as they are, not as a step table's "one row per step, no samples"
+    assert again.meta.reason == ("imported from run.xlsx: mkm export's workbook, its steps "
+                                 "and samples as recorded")
     pd.testing.assert_frame_equal(again.steps, run.steps, rtol=1e-9, check_dtype=False)
     pd.testing.assert_frame_equal(again.samples, run.samples, rtol=1e-9, check_dtype=False)
     assert (again.meta.calibration, again.meta.tare) == (run.meta.calibration, run.meta.tare)
@@ -2009,10 +2012,9 @@ def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, m
 
 def test_an_exported_runs_negative_readings_import_back_as_numbers(config, tmp_path, mkm_cli):
     """The export writes run.json's values as text, and a negative one starts like a formula:
-    the apostrophe that guards it is the export's, not the value's. A monitor that reads below
-    0 bar vented (fresh draw of promises18, seed 2026120722: -0.00107 bar) came back as the
-    text "'-0.00107421875", and mkm identify refused the run imported back (could not convert
-    string to float)."""
+    the apostrophe that guards it is the export's, not the value's. Read as part of it, a
+    monitor's vented reading below 0 bar (-0.00107 bar on a fresh draw of promises18, seed
+    2026120722) is the text "'-0.00107421875", which mkm identify cannot read."""
     from mkm.bench.run import acquire
     from mkm.identify.runs import load_run_data
 
