@@ -1781,6 +1781,34 @@ def test_a_staircase_in_time_gives_the_bench_steps(tmp_path, mkm_cli):
         assert step.force_N_mean == pytest.approx(truth[hold].mean(), abs=0.15)
 
 
+@pytest.mark.parametrize("timed", [True, False])
+def test_a_staircase_after_a_vented_pre_conditioning_cycle_starts_rising(timed, tmp_path,
+                                                                          mkm_cli):
+    # the bench's own record: tare, one cycle to 2 bar and vented, then the staircase from
+    # 0 bar. Its first hold is reached rising from the vent (the bench records it "up", and the
+    # braid's friction holds it low), not falling from the 2 bar hold before the vent (fresh
+    # simulated runs of promises18, seed 2026120725)
+    levels = [2.0, 0.0, 0.5, 1.0, 1.5, 1.0, 0.5]
+    rng = np.random.default_rng(3)
+    knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
+    for level in levels:  # a 1 s ramp, then 12 s held
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 13.0]
+        knots_p += [level, level]
+    t = np.arange(0.0, knots_t[-1], 0.1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.0, 30.0)
+    frame = pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
+                          "F": truth + rng.normal(0, 0.2, t.size)})
+    path = tmp_path / "staircase.csv"
+    (frame if timed else frame.drop(columns="time")).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    steps = run.steps
+    assert run.meta.imported_from["shape"] == "staircase"
+    assert steps["set_pressure_bar"].tolist() == pytest.approx(
+        [2.0, 0.5, 1.0, 1.5, 1.0, 0.5], abs=0.01)
+    assert steps["direction"].tolist() == ["up", "up", "up", "up", "down", "down"]
+
+
 def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
     pd.DataFrame({"pressure_bar": PRESSURES, "force_N": thickwall_N(PRESSURES, 0.122),
