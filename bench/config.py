@@ -103,12 +103,23 @@ def read_muscle(table: Any, where: str = "muscle") -> Muscle:
     prediction."""
     if not isinstance(table, dict):
         raise ValueError(f"[{where}] must be a table of settings, got {str(table)[:60]}")
-    table = dict(table)
-    tolerances = typed_section(Tolerances, table.pop("tolerances", {}), f"{where}.tolerances")
-    check_muscle_id(table.get("id"), f"{where}.id")
+    table, problems = dict(table), Problems()
+    tolerances = Tolerances()
+    with problems.check():
+        tolerances = typed_section(Tolerances, table.pop("tolerances", {}),
+                                   f"{where}.tolerances")
+    with problems.check():
+        check_muscle_id(table.get("id"), f"{where}.id")
     if isinstance(table.get("eps"), str):  # "12.2%", as --eps takes it
-        table["eps"] = parse_fraction(table["eps"], f"{where}.eps")
-    return Muscle.from_dict(table, where, tolerances=tolerances)
+        with problems.check():
+            table["eps"] = parse_fraction(table["eps"], f"{where}.eps")
+        if isinstance(table["eps"], str):  # said: the muscle's other values are checked too
+            table["eps"] = 0.0
+    muscle = None
+    with problems.check():
+        muscle = Muscle.from_dict(table, where, tolerances=tolerances)
+    problems.raise_any()
+    return muscle
 
 
 @dataclass(frozen=True)

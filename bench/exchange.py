@@ -87,6 +87,7 @@ from mkm.core.records import (
     file_sha256,
     provenance,
     spreadsheet_safe,
+    spreadsheet_safe_text,
 )
 from mkm.fem.limits import PRACTICAL_RANGE, check_value, outside
 
@@ -648,6 +649,8 @@ def _restored(path: Path, known: dict, meta, steps, samples, notes, shape):
             index=False)]
         notes.insert(0, f"{len(samples)} samples")
         shape = "export"
+        meta.reason = (f"imported from {path.name}: mkm export's workbook, its steps and "
+                       "samples as recorded")
     for part in ("calibration", "tare", "hardware", "sequence"):
         restored = _unflattened(known, part)
         if restored:
@@ -687,6 +690,10 @@ def _cell_value(cell):
     if cell is None or cell == "":
         return None
     if isinstance(cell, str):
+        if cell[:1] == "'" and spreadsheet_safe_text(cell[1:]) == cell:
+            # the export's guard against a formula (a negative number written as text starts
+            # like one), not part of the value
+            cell = cell[1:]
         if cell in ("True", "False"):
             return cell == "True"
         try:

@@ -312,6 +312,20 @@ def shape(time_s: np.ndarray, pressure_bar: np.ndarray,
         dt[pressurised].sum()) and np.median(steps_bar) > 2 * PLATEAU_TOLERANCE_BAR else "ramp"
 
 
+def directions(pressure_bar: np.ndarray, held: list[Plateau]) -> list[str]:
+    """Each plateau's branch: ``"up"`` where it lies above the plateau before it or the record
+    was vented between them (a staircase after a pre-conditioning cycle rises from its vent,
+    as the braid's friction does), else ``"down"``."""
+    vented = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR  # held_plateaus' vented level
+    out, previous, stop = [], 0.0, 0
+    for q in held:
+        between = pressure_bar[stop:q.start]
+        rose = q.level_bar >= previous or (between.size > 0 and between.min() <= vented)
+        out.append("up" if rose else "down")
+        previous, stop = q.level_bar, q.stop
+    return out
+
+
 def staircase_steps(time_s, pressure_bar, force_N, settle_config,
                     held: list[Plateau] | None = None) -> tuple[list[StepRecord], np.ndarray]:
     """The steps of a staircase (module docstring) and each sample's step (-1: between
@@ -319,12 +333,10 @@ def staircase_steps(time_s, pressure_bar, force_N, settle_config,
     judges the plateaus; ``held``: its :func:`held_plateaus`, if found already."""
     held = held_plateaus(time_s, pressure_bar) if held is None else held
     step_of = np.full(time_s.size, -1)
-    records, previous = [], 0.0
+    records = []
     repeats: dict[tuple[str, float], int] = {}
-    for k, q in enumerate(held):
+    for k, (q, direction) in enumerate(zip(held, directions(pressure_bar, held), strict=True)):
         t, f, p = time_s[q.start:q.stop], force_N[q.start:q.stop], pressure_bar[q.start:q.stop]
-        direction = "up" if q.level_bar >= previous else "down"
-        previous = q.level_bar
         settle_at, settled = _settle_index(t, f, p, q.level_bar, settle_config)
         hold = HoldStats()
         for j in range(settle_at, t.size):
@@ -344,11 +356,9 @@ def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]) -> list[
     with :data:`RECORD_PLATEAU_ROWS`). Without time the bench's settle test cannot judge a
     plateau: each is averaged over its second half, as a plateau that never settles is, its
     start and end times unknown (NaN)."""
-    records, previous = [], 0.0
+    records = []
     repeats: dict[tuple[str, float], int] = {}
-    for k, q in enumerate(held):
-        direction = "up" if q.level_bar >= previous else "down"
-        previous = q.level_bar
+    for k, (q, direction) in enumerate(zip(held, directions(pressure_bar, held), strict=True)):
         hold = HoldStats()
         for j in range((q.start + q.stop) // 2, q.stop):
             hold.add(float(j), float(force_N[j]), float(pressure_bar[j]))

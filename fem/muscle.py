@@ -45,6 +45,15 @@ def eps_at_rest_length(L0_mm: float, eps: float, rest_length_mm: float) -> float
     return 1.0 - L0_mm * (1.0 - eps) / rest_length_mm
 
 
+
+def _said(check, *args) -> list[str]:
+    """The line of ``check(*args)``'s ``ValueError``, none where it passes."""
+    try:
+        check(*args)
+    except ValueError as exc:
+        return [str(exc)]
+    return []
+
 @dataclass(frozen=True)
 class Muscle:
     """A McKibben muscle (see the module docstring); checked when made.
@@ -105,24 +114,27 @@ class Muscle:
         ``ValueError`` names ``where`` and the bad or missing field."""
         if not isinstance(data, dict):
             raise ValueError(f"{where} is not a table: expected {', '.join(('id', *REQUIRED))}")
-        # a key not known first: a misspelt D0_mm would otherwise be said missing, unnamed
+        # every bad value at once, a line each (a configuration's check names them all)
         known = {f.name for f in dataclasses.fields(cls)} - {"tolerances"}
-        unknown = sorted(set(data) - known)
-        if unknown:
-            raise ValueError(f"{where}.{str(unknown[0])[:40]} is not a field of a muscle: "
-                             f"expected some of {', '.join(sorted(known))}")
-        for name in REQUIRED:
-            if name not in data:
-                raise ValueError(f"{where}.{name} is missing: expected the muscle's "
-                                 f"{LIMITS[name][2].split(' ', 1)[1]}")
+        unknown = sorted(map(str, set(data) - known))
+        lines = [f"{where}.{name[:40]} is not a field of a muscle: expected some of "
+                 f"{', '.join(sorted(known))}" for name in unknown]
+        if not unknown:  # a misspelt D0_mm is named as such, not as a D0_mm missing too
+            lines += [f"{where}.{name} is missing: expected the muscle's "
+                      f"{LIMITS[name][2].split(' ', 1)[1]}" for name in REQUIRED
+                      if name not in data]
         if "id" in data:
-            check_muscle_id(data["id"], f"{where}.id")
+            lines += _said(check_muscle_id, data["id"], f"{where}.id")
         for name in NUMBERS:
             value = data.get(name)
-            if value is not None and (isinstance(value, bool)
-                                      or not isinstance(value, int | float)):
-                raise ValueError(f"{where}.{name}={str(value)[:40]!r} is invalid: expected a "
-                                 "number")
+            if value is None:
+                continue
+            if isinstance(value, bool) or not isinstance(value, int | float):
+                lines.append(f"{where}.{name}={str(value)[:40]!r} is invalid: expected a number")
+            else:
+                lines += _said(check_value, name, value, f"{where}.")
+        if lines:
+            raise ValueError("\n".join(lines))
         try:
             return cls(**{k: data[k] for k in data}, **extra)
         except ValueError as exc:

@@ -417,6 +417,30 @@ def test_every_bad_value_is_named_at_once(tmp_path, mkm_cli):
         "config lab.toml: sim.seed=1.5 is invalid: expected a whole number"]
 
 
+def test_every_bad_value_of_the_muscle_is_named_at_once():
+    """[muscle] and its tolerances name every bad value, a line each: muscle.eps = "2 bar"
+    beside muscle.tolerances.t0_mm = "abc" (a fresh draw of promises18, seed 2026120728), and
+    several bad numbers of the muscle itself."""
+    text = BASE.replace('id = "m1"', 'id = "a/b"').replace("D0_mm = 30", 'D0_mm = "x"').replace(
+        "t0_mm = 3", "t0_mm = -1").replace("L0_mm = 282", "L0_mm = 1e9").replace(
+        "eps = 0", 'eps = "2 bar"\n[muscle.tolerances]\nt0_mm = "abc"')
+    with pytest.raises(ValueError) as info:
+        parse_config(text, "lab.toml")
+    lines = str(info.value).splitlines()
+    assert [line.split("=")[0].split(" ")[2] for line in lines] == [
+        "muscle.tolerances.t0_mm", "muscle.id", "muscle.eps", "muscle.D0_mm", "muscle.t0_mm",
+        "muscle.L0_mm"]
+    assert lines[2] == ("config lab.toml: muscle.eps='2 bar' is not a number: expected the "
+                        "number alone, without 'bar' (in the unit the name or --help gives)")
+    assert lines[4] == ("config lab.toml: muscle.t0_mm=-1 is invalid: expected a wall "
+                        "thickness in [0.05, 100] mm")
+    # a misspelt key is named as no field, not as a missing D0_mm too
+    with pytest.raises(ValueError) as info:
+        parse_config(BASE.replace("D0_mm = 30", "D0mm = 30"), "lab.toml")
+    (line,) = str(info.value).splitlines()
+    assert line.startswith("config lab.toml: muscle.D0mm is not a field of a muscle")
+
+
 def test_a_sections_other_values_are_checked_beside_a_value_of_the_wrong_type():
     """buffer_s = "ten" hid read_retries = 1000 of the same [daq] (and nonlinearity 0.5 of
     [loadcell] hid nothing only because offset_V was a number): the section's own checks

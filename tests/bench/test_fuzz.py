@@ -224,10 +224,12 @@ SETTINGS = [line.split(" =")[0] for line in BASE.splitlines()
 def test_hostile_config_values_are_one_line(key, value):
     lines = [f"{key} = {value}" if line.split(" =")[0] == key else line
              for line in BASE.splitlines()]
+    # a line per bad value: a key of two sections (D0_mm of [muscle] and of its tolerances) two
+    edited = sum(line.split(" =")[0] == key for line in BASE.splitlines())
     try:
         parse_config("\n".join(lines))
     except ValueError as exc:
-        assert "\n" not in str(exc)
+        assert len(str(exc).splitlines()) <= edited
 
 
 def test_a_500_deep_inline_table_and_a_huge_device_name_are_one_line():

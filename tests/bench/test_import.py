@@ -1865,6 +1865,34 @@ def test_a_staircase_in_time_gives_the_bench_steps(tmp_path, mkm_cli):
         assert step.force_N_mean == pytest.approx(truth[hold].mean(), abs=0.15)
 
 
+@pytest.mark.parametrize("timed", [True, False])
+def test_a_staircase_after_a_vented_pre_conditioning_cycle_starts_rising(timed, tmp_path,
+                                                                          mkm_cli):
+    # the bench's own record: tare, one cycle to 2 bar and vented, then the staircase from
+    # 0 bar. Its first hold is reached rising from the vent (the bench records it "up", and the
+    # braid's friction holds it low), not falling from the 2 bar hold before the vent (fresh
+    # simulated runs of promises18, seed 2026120725)
+    levels = [2.0, 0.0, 0.5, 1.0, 1.5, 1.0, 0.5]
+    rng = np.random.default_rng(3)
+    knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
+    for level in levels:  # a 1 s ramp, then 12 s held
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 13.0]
+        knots_p += [level, level]
+    t = np.arange(0.0, knots_t[-1], 0.1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.0, 30.0)
+    frame = pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
+                          "F": truth + rng.normal(0, 0.2, t.size)})
+    path = tmp_path / "staircase.csv"
+    (frame if timed else frame.drop(columns="time")).to_csv(path, index=False)
+    (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    steps = run.steps
+    assert run.meta.imported_from["shape"] == "staircase"
+    assert steps["set_pressure_bar"].tolist() == pytest.approx(
+        [2.0, 0.5, 1.0, 1.5, 1.0, 0.5], abs=0.01)
+    assert steps["direction"].tolist() == ["up", "up", "up", "up", "down", "down"]
+
+
 def test_export_then_import_gives_the_same_steps(tmp_path, mkm_cli):
     path = tmp_path / "lab.csv"
     pd.DataFrame({"pressure_bar": PRESSURES, "force_N": thickwall_N(PRESSURES, 0.122),
@@ -2077,6 +2105,9 @@ def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, m
     assert code == 0, err
     (again,), err = _import(mkm_cli, tmp_path / "run.xlsx")
     assert f"the exported run's own, with its samples; {len(run.samples)} samples" in err
+    # its samples are said as they are, not as a step table's "one row per step, no samples"
+    assert again.meta.reason == ("imported from run.xlsx: mkm export's workbook, its steps "
+                                 "and samples as recorded")
     pd.testing.assert_frame_equal(again.steps, run.steps, rtol=1e-9, check_dtype=False)
     pd.testing.assert_frame_equal(again.samples, run.samples, rtol=1e-9, check_dtype=False)
     assert (again.meta.calibration, again.meta.tare) == (run.meta.calibration, run.meta.tare)
@@ -2089,6 +2120,28 @@ def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, m
     assert again.path.name.endswith("-imported-SIMULATED")
     assert again.meta.hardware == run.meta.hardware
     assert again.meta.sequence == run.meta.sequence
+
+
+def test_an_exported_runs_negative_readings_import_back_as_numbers(config, tmp_path, mkm_cli):
+    """The export writes run.json's values as text, and a negative one starts like a formula:
+    the apostrophe that guards it is the export's, not the value's. Read as part of it, a
+    monitor's vented reading below 0 bar (-0.00107 bar on a fresh draw of promises18, seed
+    2026120722) is the text "'-0.00107421875", which mkm identify cannot read."""
+    from mkm.bench.run import acquire
+    from mkm.identify.runs import load_run_data
+
+    low = config.replace(sim={"loadcell_offset_V": -0.02,
+                              "truth": {"monitor_offset_bar": -0.01}})
+    run = load_run(acquire(low, out_root=tmp_path / "bench", notify=lambda message: None).path)
+    assert run.meta.tare["monitor_vented_bar"] < 0 and run.meta.tare["drift_N"] != 0
+    code, _, err = mkm_cli(["export", str(run.path), "--out", str(tmp_path / "run.xlsx")])
+    assert code == 0, err
+    (again,), _ = _import(mkm_cli, tmp_path / "run.xlsx")
+    assert again.meta.tare == run.meta.tare
+    assert again.meta.calibration == run.meta.calibration
+    assert again.meta.hardware == run.meta.hardware
+    vented = load_run_data(again.path).vented_bar
+    assert vented == load_run_data(run.path).vented_bar and vented[0] < 0
 
 
 def test_an_exported_run_that_was_cut_short_stays_marked_with_why(config, tmp_path, mkm_cli):
