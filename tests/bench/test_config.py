@@ -419,7 +419,7 @@ def test_every_bad_value_is_named_at_once(tmp_path, mkm_cli):
 
 def test_every_bad_value_of_the_muscle_is_named_at_once():
     """[muscle] and its tolerances name every bad value, a line each: muscle.eps = "2 bar"
-    beside muscle.tolerances.t0_mm = "abc" (a fresh draw of promises18, seed 2026120728), and
+    beside muscle.tolerances.t0_mm = "abc" (a fresh draw, seed 2026120728), and
     several bad numbers of the muscle itself."""
     text = BASE.replace('id = "m1"', 'id = "a/b"').replace("D0_mm = 30", 'D0_mm = "x"').replace(
         "t0_mm = 3", "t0_mm = -1").replace("L0_mm = 282", "L0_mm = 1e9").replace(

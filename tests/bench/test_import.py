@@ -1841,19 +1841,28 @@ def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     assert values["hysteresis_fraction"] == pytest.approx(0.05, abs=0.005)
 
 
-def test_a_staircase_in_time_gives_the_bench_steps(tmp_path, mkm_cli):
-    levels = [0.5, 1.0, 1.5, 1.0, 0.5]
-    rng = np.random.default_rng(2)
+def _staircase(levels, seed):
+    """A 10 Hz record at eps 0: 5 s vented, then each level reached in 1 s and held 12 s
+    (friction 3 %); noise 0.003 bar and 0.2 N. The record ``time``, ``P``, ``F``, the clock
+    and the true force."""
+    rng = np.random.default_rng(seed)
     knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
-    for level in levels:  # a 1 s ramp, then 12 s held
+    for level in levels:
         knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 13.0]
         knots_p += [level, level]
     t = np.arange(0.0, knots_t[-1], 0.1)
     p = np.interp(t, knots_t, knots_p)
     truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.0, 30.0)
+    frame = pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
+                          "F": truth + rng.normal(0, 0.2, t.size)})
+    return frame, t, truth
+
+
+def test_a_staircase_in_time_gives_the_bench_steps(tmp_path, mkm_cli):
+    levels = [0.5, 1.0, 1.5, 1.0, 0.5]
+    frame, t, truth = _staircase(levels, 2)
     path = tmp_path / "staircase.tsv"
-    pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
-                  "F": truth + rng.normal(0, 0.2, t.size)}).to_csv(path, sep="\t", index=False)
+    frame.to_csv(path, sep="\t", index=False)
     (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
     steps = run.steps
     assert run.meta.imported_from["shape"] == "staircase"
@@ -1871,18 +1880,8 @@ def test_a_staircase_after_a_vented_pre_conditioning_cycle_starts_rising(timed, 
     # the bench's own record: tare, one cycle to 2 bar and vented, then the staircase from
     # 0 bar. Its first hold is reached rising from the vent (the bench records it "up", and the
     # braid's friction holds it low), not falling from the 2 bar hold before the vent (fresh
-    # simulated runs of promises18, seed 2026120725)
-    levels = [2.0, 0.0, 0.5, 1.0, 1.5, 1.0, 0.5]
-    rng = np.random.default_rng(3)
-    knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
-    for level in levels:  # a 1 s ramp, then 12 s held
-        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 13.0]
-        knots_p += [level, level]
-    t = np.arange(0.0, knots_t[-1], 0.1)
-    p = np.interp(t, knots_t, knots_p)
-    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.0, 30.0)
-    frame = pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
-                          "F": truth + rng.normal(0, 0.2, t.size)})
+    # simulated runs, seed 2026120725)
+    frame, _, _ = _staircase([2.0, 0.0, 0.5, 1.0, 1.5, 1.0, 0.5], 3)
     path = tmp_path / "staircase.csv"
     (frame if timed else frame.drop(columns="time")).to_csv(path, index=False)
     (run,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
@@ -2125,7 +2124,7 @@ def test_a_bench_run_exported_and_imported_is_the_run_it_was(config, tmp_path, m
 def test_an_exported_runs_negative_readings_import_back_as_numbers(config, tmp_path, mkm_cli):
     """The export writes run.json's values as text, and a negative one starts like a formula:
     the apostrophe that guards it is the export's, not the value's. Read as part of it, a
-    monitor's vented reading below 0 bar (-0.00107 bar on a fresh draw of promises18, seed
+    monitor's vented reading below 0 bar (-0.00107 bar on a fresh draw, seed
     2026120722) is the text "'-0.00107421875", which mkm identify cannot read."""
     from mkm.bench.run import acquire
     from mkm.identify.runs import load_run_data
