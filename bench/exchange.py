@@ -105,6 +105,10 @@ EXCEL_MAX_ROWS = 1_048_575  # below the header row
 EXPORT_SHEETS = ("steps", "samples", "metadata")
 #: ``--tare`` and ``--vented``: found in the data (auto), none, or a value given
 ZERO_CHOICES = ("auto", "none")
+#: a step table's closing 0 bar rows said to read another zero than its opening one beyond this
+#: [N]: two ADC steps of a bench's load cell, the slack steps' floor identify uses for a table
+#: (:data:`mkm.identify.goodness.ZERO_FLOOR_N`), where no force accuracy is declared
+TABLE_ZERO_DRIFT_N = 0.5
 #: ``--tare linear``: a time series' zero taken at its rests before the rise and after the vent
 #: that ends it, joined by a line in time (a load cell that drifted through the record)
 LINEAR_TARE = "linear"
@@ -921,6 +925,24 @@ def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
             "in time between the two rests"]
 
 
+def _table_zero_drift(force, zero: float, closing_rows, declared, handling) -> list[str]:
+    """The note (if any) of a step table tared at its 0 bar rising row(s) whose falling branch
+    ends at 0 bar reading another force: the difference recorded as ``zero_drift_N``, said when
+    beyond :data:`TABLE_ZERO_DRIFT_N` or twice the declared force accuracy's absolute part (a
+    table has no noise to judge it by)."""
+    if closing_rows is None or not closing_rows.any():
+        return []
+    drift = float(np.mean(force[closing_rows])) - zero
+    handling["zero_drift_N"] = drift
+    floor = max(TABLE_ZERO_DRIFT_N, 2.0 * declared.absolute if declared else 0.0)
+    if abs(drift) <= floor:
+        return []
+    return [f"the 0 bar row(s) that end the falling branch read {drift:+.3g} N from the zero "
+            f"at the start (beyond {floor:.2g} N): a load cell that drifted, or a muscle that "
+            "did not come back; every step keeps the start's zero (a table's rows have no time "
+            "to spread a drift over: --tare N sets another zero)"]
+
+
 def _linear_tare(group: _Group, time_s, pressure, force, rest, handling):
     """``--tare linear``: the zero of a time series whose load cell drifted, the mean force of
     its rest before the rise and of the vented rest that ends it, joined by a line in time
@@ -1201,6 +1223,9 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         handling["tare_std_N"] = rest.std_N
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
+        drift = _table_zero_drift(force, zero, ~up & (pressure <= series.VENTED_THRESHOLD_BAR)
+                                  if zero_at <= series.VENTED_THRESHOLD_BAR else None,
+                                  accuracy.get("force"), handling)
     else:
         zero, handling["tare"] = force_sign * float(tare), "given"
         if zero >= float(np.nanmax(force)):  # every force <= 0: a muscle that never pulled

@@ -901,6 +901,26 @@ def test_a_zero_that_drifted_linearly_is_taken_out_with_tare_linear(tmp_path, mk
     assert code == 2 and "expected auto, none, linear or a number in N" in err, err
 
 
+@pytest.mark.parametrize("closing_N, accuracy, said", [
+    (0.8, [], True), (0.3, [], False), (-0.8, [], True),
+    (0.8, ["--accuracy", "force=0.5N+1%"], False),  # within twice the declared 0.5 N
+])
+def test_a_step_tables_closing_zero_that_drifted_is_said(closing_N, accuracy, said, tmp_path,
+                                                         mkm_cli):
+    # a table whose falling branch ends at 0 bar reading +0.72 N from its rising 0 bar row (a
+    # newcomer's 8 mm muscle, its cell drifting) was imported without a word, where a time
+    # series' drift is said
+    path = tmp_path / "steps.csv"
+    path.write_text(f"P [bar],F [N]\n0,0.2\n1,100.2\n2,200.2\n1,105.2\n0,{0.2 + closing_N}\n",
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "10%", *accuracy)
+    assert run.meta.imported_from["zero_drift_N"] == pytest.approx(closing_N)
+    assert (f"the 0 bar row(s) that end the falling branch read {closing_N:+.3g} N from the "
+            "zero at the start (beyond 0.5 N): a load cell that drifted, or a muscle that did "
+            "not come back; every step keeps the start's zero") in err if said else (
+        "end the falling branch" not in err), err
+
+
 def test_a_step_table_with_a_time_per_row_is_a_step_table(tmp_path, mkm_cli):
     # a logger that writes each hold's mean with its time, 30 s apart: 'no step found in the
     # time series', since no hold had the samples of a plateau
