@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import csv
 import datetime
+import glob
 import io
 import itertools
 import logging
@@ -2754,22 +2755,23 @@ PATTERN_CHARACTERS = "*?["
 
 
 def _natural_key(path: Path) -> list:
-    """A file name's sort key with its numbers by value: ``step2`` before ``step10``."""
-    return [int(part) if part.isdigit() else part.lower()
-            for part in re.split(r"(\d+)", path.name)]
+    """A path's sort key, folder by folder, with the numbers in names by value: ``step2``
+    before ``step10``."""
+    return [[int(part) if part.isdigit() else part.lower() for part in re.split(r"(\d+)", name)]
+            for name in path.parts]
 
 
 def table_files(given: list[str | Path]) -> list[Path]:
     """The files a list of table arguments names: a path as given, a pattern (``*``, ``?``,
-    ``[...]`` in its name) its matches in file-name order, numbers by value (``step2`` before
-    ``step10``); ``ValueError`` for a pattern matching nothing or a file named twice."""
+    ``[...]``, in its folders too) its matches in name order, numbers by value (``step2``
+    before ``step10``); ``ValueError`` for a pattern matching nothing or a file named twice."""
     files: list[Path] = []
     for item in given:
         path = Path(item)
-        if path.exists() or not any(c in path.name for c in PATTERN_CHARACTERS):
+        if path.exists() or not any(c in str(item) for c in PATTERN_CHARACTERS):
             files.append(path)
             continue
-        matches = sorted((p for p in path.parent.glob(path.name) if p.is_file()),
+        matches = sorted((Path(p) for p in glob.glob(str(item)) if Path(p).is_file()),
                          key=_natural_key)
         if not matches:
             raise ValueError(f"{item}: no file matches this pattern: expected one or more "
