@@ -2845,6 +2845,9 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
             raise ValueError(f"{path.name}: no time column: expected one in each of the "
                              f"{len(paths)} files, to order them and keep the time between "
                              "them; import a file without one alone")
+        for role in ("pressure", "force"):  # a bad cell named in its own file
+            if role in found:
+                column_values(table, found[role])
         read.append((path, table, found))
     first_path, first, first_found = read[0]
     shape = {r: (c.header, c.describe()["unit"]) for r, c in first_found.items()}
@@ -2945,4 +2948,5 @@ def _span(first_s: float, last_s: float, origin) -> str:
     if origin is None:
         return f"{first_s:g}-{last_s:g} s"
     moment = datetime.datetime(1970, 1, 1) + datetime.timedelta(seconds=first_s)
-    return f"from {moment.isoformat(sep=' ')}, {last_s - first_s:g} s"
+    shown = moment.isoformat(sep=" ") if first_s >= _DAY_S else moment.time().isoformat()
+    return f"from {shown}, {last_s - first_s:g} s"

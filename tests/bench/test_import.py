@@ -2858,6 +2858,38 @@ def test_files_whose_clock_continues_are_ordered_by_it(tmp_path, mkm_cli):
             "it, step0.csv first, the time between files as logged (3.1-3.1 s)") in err
 
 
+def test_files_of_date_times_are_ordered_and_refused_by_them(tmp_path, mkm_cli):
+    # a logger's date-times: the files follow one another on them, whatever their names; one
+    # that overlaps another is named with its moment
+    files, clock, _ = _files_per_step(tmp_path / "LM8", clock_restarts=False)
+    start = datetime.datetime(2026, 12, 5, 14, 5)
+    for k, path in enumerate(files):
+        frame = pd.read_csv(path, comment="#")
+        frame["Time [s]"] = [(start + datetime.timedelta(seconds=float(t))).isoformat(
+            sep=" ", timespec="milliseconds") for t in frame["Time [s]"]]
+        frame.rename(columns={"Time [s]": "Timestamp"}).to_csv(
+            tmp_path / "LM8" / f"{chr(ord('k') - k)}.csv", index=False)
+        path.unlink()
+    (run,), err = _import(mkm_cli, tmp_path / "LM8" / "*.csv", *MUSCLE, "--eps", "0")
+    assert [f["file"] for f in run.meta.imported_from["files"]][:3] == ["k.csv", "j.csv", "i.csv"]
+    assert run.samples["time_s"].to_numpy() == pytest.approx(clock - UNLOGGED_S, abs=1e-6)
+    _rewritten_time(tmp_path / "LM8" / "j.csv", 30.0)
+    code, _, err = mkm_cli(["import", str(tmp_path / "LM8" / "*.csv"), *MUSCLE, "--eps", "0",
+                            "--out", str(tmp_path / "again")])
+    assert code == 2 and err.count("\n") == 1
+    # j.csv 30 s late, at 53-69.9 s: into i.csv's 43-59.9 s
+    assert ("j.csv: its clock (from 2026-12-05 14:05:53, 16.9 s) overlaps i.csv's (from "
+            "2026-12-05 14:05:43, 16.9 s), and not every file's clock starts at 0") in err
+
+
+def _rewritten_time(path: Path, late_s: float) -> None:
+    """``path``'s date-times ``late_s`` seconds later."""
+    frame = pd.read_csv(path)
+    frame["Timestamp"] = [(datetime.datetime.fromisoformat(t) + datetime.timedelta(
+        seconds=late_s)).isoformat(sep=" ", timespec="milliseconds") for t in frame["Timestamp"]]
+    frame.to_csv(path, index=False)
+
+
 def test_a_record_logged_a_file_per_step_identifies_its_creep(tmp_path, mkm_cli):
     # each hold's first 3 s not logged: joined with the time between the files, the creep's
     # time constant is the record's (5 s), as from the whole record
