@@ -62,6 +62,7 @@ from mkm.bench.tables import (
     directions,
     flags,
     join_by_time,
+    join_files,
     key_values,
     marked_gauge,
     numbers_as_read,
@@ -274,7 +275,7 @@ def check_sample_rate(rate_hz: float) -> float:
     return rate_hz
 
 
-def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
+def import_table(path: str | Path | list[str | Path], out_root: str | Path, muscle: dict, *,
                  columns: dict[str, str] | None = None, units: dict[str, str] | None = None,
                  sheet: str | None = None, tare: str | float = "auto",
                  vented: str | float = "auto", select: str | None = None,
@@ -282,12 +283,17 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                  one_step_per_row: bool = False, join: str | Path | None = None,
                  join_shift_s: float | None = None, scaling: dict[str, Scaling] | None = None,
                  sample_rate_hz: float | None = None, tolerances: Tolerances | None = None,
-                 notify=lambda line: None, bar=None) -> list[ImportedRun]:
+                 between_files_s: float | None = None, notify=lambda line: None,
+                 bar=None) -> list[ImportedRun]:
     """Run folders (status ``imported``) under ``out_root`` from the table ``path`` (see the
     module docstring).
 
     Parameters
     ----------
+    path : path or list of paths
+        The table; several files: one record logged a file per pressure step, each with a time
+        column, read as one table (:func:`mkm.bench.tables.join_files`: ordered by their clock
+        where it continues, else in the order given), every file's SHA-256 recorded.
     muscle : dict
         ``id``, ``D0_mm``, ``t0_mm`` and, unless the table has them, ``L0_mm`` and ``eps``
         (``None``: take them from the table); optionally :data:`DECLARED`, the braid angle and
@@ -341,6 +347,10 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         a time column, for ``mkm export``'s workbook and with ``join``. A LabChart export
         without its time column is timed so by its header's ``Interval=`` (a rate given must
         agree with it).
+    between_files_s : float, optional
+        Several files whose clocks each restart: the seconds from one file's last sample to
+        the next one's first (default: one sample interval, each hold's creep timed from its
+        file's start).
     tolerances : mkm.fem.tolerances.Tolerances, optional
         The +- tolerances the muscle was made to, recorded with each run as a bench run records
         its configuration's ``[muscle.tolerances]`` (``calibration.muscle_tolerances``): what
@@ -358,8 +368,15 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     Raises ``ValueError`` naming the file and the cell of what cannot be imported; nothing is
     written then.
     """
-    path = Path(path)
+    paths = [Path(p) for p in path] if isinstance(path, list | tuple) else [Path(path)]
+    path, several = paths[0], len(paths) > 1
     bar = _Stages(bar)
+    if between_files_s is not None and not several:
+        raise ValueError(f"--between-files {between_files_s:g} s: one file, {path.name}: "
+                         "expected the option with the several files of one record")
+    if several and sheet is not None:
+        raise ValueError(f"--sheet {sheet!r} with {len(paths)} files: expected one table in "
+                         "each file of a record logged as several files")
     if join_shift_s is not None and join is None:
         raise ValueError(f"--join-shift {join_shift_s:g} s: no --join-by-time FILE: expected it "
                          "with the file whose times it moves")
@@ -374,7 +391,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                          f"{', '.join(map(str, FORCE_SIGNS))}")
     muscle = dict(muscle)
     tare, vented = parse_zero(tare, "--tare", "N"), parse_zero(vented, "--vented", "bar")
-    exported = sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path))
+    exported = not several and sheet is None and set(EXPORT_SHEETS) <= set(sheet_names(path))
     if exported and sample_rate_hz is not None:  # its samples have their times
         raise ValueError(f"--sample-rate {sample_rate_hz:g} Hz: {path.name} is a run mkm "
                          "export wrote, its samples timed: expected the option only for a "
@@ -387,15 +404,17 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
         sheet = "steps"
         if tare == "auto":  # its forces were zeroed when it was recorded or imported
             tare = "none"
-    bar.start(f"reading {path.name}")
-    tables = read_tables(path, sheet)
+    bar.start(f"reading {path.name}" + (f" and {len(paths) - 1} more" if several else ""))
+    joined = join_files(paths, columns, units, scaling, between_files_s) if several else None
+    tables = [joined.table] if joined else read_tables(path, sheet)
     bar.done(len(tables))
     names = [t.sheet for t in tables]
     other = _join_table(join, scaling) if join is not None else None
     prepared, skipped = [], []
     for table in tables:
         bar.start(f"recognising {table.name}")
-        table, found = with_milliseconds(table, recognise(table, columns, units, scaling))
+        table, found = ((table, dict(joined.found)) if joined else
+                        with_milliseconds(table, recognise(table, columns, units, scaling)))
         # a logger's row numbers under a clock's name: read as seconds, a 1 Hz clock the file
         # does not say
         counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
@@ -517,13 +536,19 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
     for recognition in prepared:
         groups += _groups(recognition, select, several_sheets=len(prepared) > 1)
     muscles = [_muscle(muscle, g) for g in groups]  # every run checked before any is written
-    sha = file_sha256(path)
+    sha = None if joined else file_sha256(path)
     bar.more(2 * len(groups))
     built = []
     for g, (m, override) in zip(groups, muscles, strict=True):
         bar.start(f"finding the steps of {g.state}")
         built.append(_build(path, sha, g, m, tare, vented, accuracy or {}, override,
                             force_sign, one_step_per_row))
+        if joined:  # each file named with its SHA-256, and how they were joined said first
+            imported = built[-1][0].imported_from
+            del imported["sha256"]
+            imported.update(file=tables[0].source.name, files=joined.files,
+                            clock=joined.clock, between_files_s=between_files_s)
+            built[-1][3].insert(0, joined.note)
         bar.done()
     shared = [k for k, g in enumerate(groups) if not {"eps", "length"} & set(g.columns)]
     if len(prepared) > 1 and len(shared) > 1 and muscle.get("eps") is not None:
@@ -546,7 +571,7 @@ def import_table(path: str | Path, out_root: str | Path, muscle: dict, *,
                                         "muscle_tolerances": asdict(tolerances)})
         label = _folder_label(meta.muscle, muscles)
         bar.start(f"writing the run folder of {g.state}")
-        writer = RunWriter(out_root, meta, f"# imported from {path.name}: no bench "
+        writer = RunWriter(out_root, meta, f"# imported from {tables[0].source.name}: no bench "
                            "configuration\n", label)
         writer.append_samples(samples)
         for step in steps:
@@ -1140,10 +1165,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             raise ValueError(f"{group.named}: the pressure is held at {level:.3g} bar "
                              f"throughout ({span}): one hold, no sweep to find steps in: "
                              "expected a record of the pressure rising; where each pressure "
-                             "step was logged to a file of its own, import them as one table: "
-                             "a row per step (its pressure and force, and direction up or "
-                             "down), or the files one after another on the clock they were "
-                             "logged by (a hold's creep is timed from its step)")
+                             "step was logged to a file of its own, import the files together "
+                             "as one run: mkm import \"FOLDER/*.csv\" (or each file named)")
         raise ValueError(f"{group.named}: the pressure never rises: {span} (a vented "
                          f"gauge's noise): expected a record of the muscle pressurised; is "
                          f"{found['pressure'].header!r} its pressure?")

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import csv
 import datetime
+import glob
 import io
 import itertools
 import logging
@@ -37,6 +38,7 @@ import numpy as np
 
 from mkm.bench.settings import TEXT_END_PADDING, saved_text
 from mkm.core.guards import table_file
+from mkm.core.records import file_sha256
 
 #: the largest table read (rows below the header, over all sheets)
 MAX_ROWS = 2_000_000
@@ -2745,3 +2747,206 @@ class Recognition:
                 **({"row_counter_column": self.row_counter} if self.row_counter else {}),
                 **({"sample_rate_hz": self.sample_rate_hz,
                     "sample_rate_from": self.sample_rate_from} if self.sample_rate_hz else {})}
+
+
+#: the characters that make a table argument a file-name pattern the toolkit expands itself
+#: (the Windows shell passes ``*.csv`` on as typed)
+PATTERN_CHARACTERS = "*?["
+
+
+def _natural_key(path: Path) -> list:
+    """A path's sort key, folder by folder, with the numbers in names by value: ``step2``
+    before ``step10``."""
+    return [[int(part) if part.isdigit() else part.lower() for part in re.split(r"(\d+)", name)]
+            for name in path.parts]
+
+
+def table_files(given: list[str | Path]) -> list[Path]:
+    """The files a list of table arguments names: a path as given, a pattern (``*``, ``?``,
+    ``[...]``, in its folders too) its matches in name order, numbers by value (``step2``
+    before ``step10``); ``ValueError`` for a pattern matching nothing or a file named twice."""
+    files: list[Path] = []
+    for item in given:
+        path = Path(item)
+        if path.exists() or not any(c in str(item) for c in PATTERN_CHARACTERS):
+            files.append(path)
+            continue
+        matches = sorted((Path(p) for p in glob.glob(str(item)) if Path(p).is_file()),
+                         key=_natural_key)
+        if not matches:
+            raise ValueError(f"{item}: no file matches this pattern: expected one or more "
+                             f"tables ({table_suffixes_text()})")
+        files += matches
+    seen: set[Path] = set()
+    for path in files:
+        if path.resolve() in seen:
+            raise ValueError(f"{path}: named twice: expected each file of the run once")
+        seen.add(path.resolve())
+    return files
+
+
+@dataclass
+class JoinedFiles:
+    """Several files of one record read as one table (:func:`join_files`)."""
+
+    table: RawTable
+    found: dict[str, Column]
+    #: each file in the order joined: its name, SHA-256, rows, clock span as read [s] and
+    #: where on the joined clock its first row lies [s]
+    files: list[dict]
+    #: ``continues`` (the files ordered by their shared clock) or ``restarts`` (in the order
+    #: given, one after another)
+    clock: str
+    #: how they were joined, in words
+    note: str
+
+
+def _file_clock(table: RawTable, found: dict[str, Column]):
+    """A file's times [s] as read and, for clock readings or date-times, the moment [s] of its
+    first row (None: seconds counted from any start)."""
+    times = column_values(table, found["time"])
+    if times.size and np.any(np.diff(times) < 0):
+        k = int(np.flatnonzero(np.diff(times) < 0)[0]) + 1
+        raise ValueError(backwards_message(f"{table.name}, cell "
+                                           f"{table.cell(k, found['time'].index)}",
+                                           found["time"].header, times[k - 1] - times[k]))
+    origin = _time_origin(table, found["time"])
+    return times, (origin[1] if origin else None)
+
+
+def join_files(paths: list[Path], columns=None, units=None, scaling=None,
+               between_files_s: float | None = None) -> JoinedFiles:
+    """One table of the files ``paths``, each one table with a time column, logged as one
+    record (one file per pressure step): the same columns in the same units in each, their
+    rows one after another.
+
+    Where the clock continues from file to file (their spans do not overlap: seconds of one
+    clock, or clock readings and date-times), the files are ordered by it and keep its times,
+    the time between files as logged. Where each file's clock restarts (seconds from 0 or one
+    sample in), they are joined in the order given, each file's first row placed
+    ``between_files_s`` after the last row of the one before (default: one sample interval of
+    that file, the step taken as the file begins, so each hold's creep is timed from its
+    file's start). ``ValueError`` in one line for what cannot be one record: a file of other
+    columns or units, or of another muscle; clocks that overlap without each restarting; a
+    time that goes back within a file; ``between_files_s`` for a clock that continues."""
+    if between_files_s is not None and not (math.isfinite(between_files_s)
+                                            and between_files_s > 0):
+        raise ValueError(f"--between-files {between_files_s:g} s: expected the time from one "
+                         "file's last sample to the next one's first, above 0 s")
+    read = []
+    for path in paths:
+        tables = read_tables(path)
+        if len(tables) != 1:
+            raise ValueError(f"{path.name}: {len(tables)} {tables[0].part}s: expected one table "
+                             "in each file of a record logged as several files")
+        table, found = with_milliseconds(tables[0], recognise(tables[0], columns, units,
+                                                              scaling))
+        if "time" not in found or counts_rows(table, found["time"]):
+            raise ValueError(f"{path.name}: no time column: expected one in each of the "
+                             f"{len(paths)} files, to order them and keep the time between "
+                             "them; import a file without one alone")
+        for role in ("pressure", "force"):  # a bad cell named in its own file
+            if role in found:
+                column_values(table, found[role])
+        read.append((path, table, found))
+    first_path, first, first_found = read[0]
+    shape = {r: (c.header, c.describe()["unit"]) for r, c in first_found.items()}
+    for path, _table, found in read[1:]:
+        other = {r: (c.header, c.describe()["unit"]) for r, c in found.items()}
+        for role in dict.fromkeys([*shape, *other]):
+            if shape.get(role) != other.get(role):
+                said = [f"{name}: " + (f"{v[0]!r} [{v[1]}]" if v else "none")
+                        for name, v in ((first_path.name, shape.get(role)),
+                                        (path.name, other.get(role)))]
+                raise ValueError(f"{path.name}: its {role} column differs from the first "
+                                 f"file's ({'; '.join(said)}): expected the same columns in "
+                                 "the same units in every file of one run")
+    if "muscle" in first_found:
+        named = {p.name: sorted(set(column_text(t, f["muscle"]))) for p, t, f in read}
+        first_named = named[first_path.name]
+        for name, muscles in named.items():
+            if muscles != first_named:
+                raise ValueError(f"{name}: muscle {', '.join(map(repr, muscles))} in column "
+                                 f"{first_found['muscle'].header!r}, {first_path.name}: "
+                                 f"{', '.join(map(repr, first_named))}: expected the files of "
+                                 "one muscle's run")
+    clocks = []
+    for path, table, found in read:
+        if not table.rows:
+            raise ValueError(f"{path.name} has no row to import")
+        times, origin = _file_clock(table, found)
+        clocks.append((times, origin))
+    start = [(origin or 0.0) + times[0] for times, origin in clocks]
+    end = [(origin or 0.0) + times[-1] for times, origin in clocks]
+    by_clock = sorted(range(len(read)), key=lambda k: start[k])
+    overlap = next(((a, b) for a, b in itertools.pairwise(by_clock) if start[b] <= end[a]),
+                   None)
+    if overlap is None:
+        if between_files_s is not None:
+            raise ValueError(f"--between-files {between_files_s:g} s: the files' clock "
+                             "continues from one to the next, its times give the time between "
+                             "them: expected the option only for files whose clocks each "
+                             "restart")
+        order, clock = by_clock, "continues"
+        placed = [start[k] - start[by_clock[0]] for k in order]
+        shift = [(clocks[k][1] or 0.0) - start[by_clock[0]] for k in order]
+    elif all(origin is None and _own_start(times, None) for times, origin in clocks):
+        order, clock = list(range(len(read))), "restarts"
+        placed, shift = [], []
+        for k in order:
+            times, at = clocks[k][0], 0.0
+            if k:
+                before = clocks[k - 1][0]
+                gap = between_files_s if between_files_s is not None else (
+                    float(np.median(np.diff(before))) if before.size > 1 else 0.0)
+                at = placed[-1] + before[-1] - before[0] + gap
+            placed.append(at)
+            shift.append(at - times[0])
+    else:
+        a, b = overlap
+        raise ValueError(f"{read[b][0].name}: its clock ({_span(start[b], end[b], clocks[b][1])}) "
+                         f"overlaps {read[a][0].name}'s ({_span(start[a], end[a], clocks[a][1])}), "
+                         "and not every file's clock starts at 0: expected the files of one "
+                         "run, one after another on one clock or each counting from its own "
+                         "start")
+    rows, numbers, files = [], [], []
+    index = first_found["time"].index
+    for j, k in enumerate(order):
+        path, table, found = read[k]
+        times = clocks[k][0]
+        for row, t in zip(table.rows, times + shift[j], strict=True):
+            row = list(row)
+            row[index] = float(t)
+            rows.append(row)
+        numbers += table.row_numbers
+        files.append({"file": path.name, "sha256": file_sha256(path), "rows": len(table.rows),
+                      "clock_as_read_s": [float(times[0]), float(times[-1])],
+                      "placed_at_s": float(placed[j])})
+    names = [f["file"] for f in files]
+    if clock == "continues":
+        gaps = [placed[j + 1] - (placed[j] + clocks[order[j]][0][-1] - clocks[order[j]][0][0])
+                for j in range(len(order) - 1)]
+        note = (f"{len(files)} files joined on their clock, which continues from one to the "
+                f"next: ordered by it, {names[0]} first, the time between files as logged "
+                f"({min(gaps):.3g}-{max(gaps):.3g} s)")
+    else:
+        note = (f"{len(files)} files joined in the order given ({names[0]} first), each "
+                "file's clock restarting at its start: "
+                + (f"each placed {between_files_s:g} s (--between-files) after the one before"
+                   if between_files_s is not None else
+                   "the time between them unknown, each placed one sample after the one "
+                   "before, its step taken as the file begins: each hold's creep timed from its "
+                   "file's start; --between-files SECONDS gives the time from one file's last "
+                   "sample to the next one's first"))
+    source = first_path.with_name(f"{first_path.name} and {len(files) - 1} more")
+    table = replace(first, source=source, rows=rows, row_numbers=numbers)
+    found = {**first_found, "time": Column("time", index, first_found["time"].header, "s")}
+    return JoinedFiles(table, found, files, clock, note)
+
+
+def _span(first_s: float, last_s: float, origin) -> str:
+    if origin is None:
+        return f"{first_s:g}-{last_s:g} s"
+    moment = datetime.datetime(1970, 1, 1) + datetime.timedelta(seconds=first_s)
+    shown = moment.isoformat(sep=" ") if first_s >= _DAY_S else moment.time().isoformat()
+    return f"from {shown}, {last_s - first_s:g} s"

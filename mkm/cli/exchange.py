@@ -50,7 +50,7 @@ def register(subparsers) -> None:
         "its first row) is a time series: stored as samples, its steps the plateaus of a "
         "staircase or quasi-static bins of a ramp (rising and falling apart).",
         epilog=IMPORT_EXAMPLE)
-    imp.add_argument("table", action=derived_help(_table_help))
+    imp.add_argument("table", nargs="+", action=derived_help(_table_help))
     imp.add_argument("--id", help=f"the muscle's id, naming the run folders ({EXPORTED})")
     imp.add_argument("--D0", type=argtype(parse_number, "--D0", "mm"),
                      help=shared_help("--D0", EXPORTED))
@@ -139,6 +139,12 @@ def register(subparsers) -> None:
                      "negative: before, 0: one trigger started both); where both hold "
                      "date-times or clock readings, how far its clock runs behind the "
                      "table's (default: none)")
+    imp.add_argument("--between-files", type=argtype(parse_number, "--between-files", "s"),
+                     default=None, metavar="SECONDS",
+                     help="several files whose clocks each restart: the time from one file's "
+                     "last sample to the next one's first, e.g. 10s (the settling not logged); "
+                     "default: one sample interval, each hold's creep timed from its file's "
+                     "start")
     imp.add_argument("--accuracy", default=None, metavar="QUANTITY=BOUND,...",
                      help="the +- bound each force and pressure value keeps (the load cell's "
                      "and the sensor's data sheet, or the table's stated accuracy): a value "
@@ -224,19 +230,24 @@ def _table_help() -> str:
     from mkm.bench.tables import table_suffixes_text
 
     return (f"the table file: {table_suffixes_text()} (LabVIEW's .lvm and a logger's .xls "
-            "read as text; .tdms: NI's TDMS file, its channels the columns)")
+            "read as text; .tdms: NI's TDMS file, its channels the columns); several files, or "
+            "a pattern in quotes (\"L135/*.csv\", expanded by mkm, its files in name order, "
+            "step2 before step10): one record logged a file per pressure step, each with a "
+            "time column, imported as one run: ordered by their clock where it continues "
+            "from file to file, else in the order given, each file's clock restarting "
+            "(--between-files); every file's SHA-256 in run.json")
 
 
 def _import(args) -> int:
     from mkm.bench.exchange import import_table, parse_accuracy, parse_zero
-    from mkm.bench.tables import parse_assignments, parse_scaling
+    from mkm.bench.tables import parse_assignments, parse_scaling, table_files
     from mkm.paths import default_out
     from mkm.progress import progress_bar, summary_line
 
     lines: list[str] = []
     with progress_bar(1, "import", not args.no_progress, unit="stage") as bar:
         runs = import_table(
-            args.table, args.out or default_out("runs"),
+            table_files(args.table), args.out or default_out("runs"),
             {"id": args.id, "D0_mm": args.D0, "t0_mm": args.t0, "L0_mm": args.L0,
              "eps": args.eps, "theta0_deg": args.theta0_deg, "C10_MPa": args.C10_MPa,
              "C01_MPa": args.C01_MPa},
@@ -248,8 +259,8 @@ def _import(args) -> int:
             force_sign=args.force_sign, one_step_per_row=args.one_step_per_row,
             join=args.join_by_time, join_shift_s=args.join_shift,
             scaling=parse_scaling(args.sensitivity, args.offset_volts, args.current_range),
-            sample_rate_hz=args.sample_rate, tolerances=args.tolerance, notify=lines.append,
-            bar=bar)
+            sample_rate_hz=args.sample_rate, tolerances=args.tolerance,
+            between_files_s=args.between_files, notify=lines.append, bar=bar)
     for line in lines:  # after the import: bad input stays one line
         summary_line("import", line)
     for run in runs:

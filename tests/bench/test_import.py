@@ -2691,9 +2691,8 @@ def test_a_file_of_one_held_step_is_named_a_hold(level_bar, tmp_path, mkm_cli):
     assert f"LM8_step04.csv: the pressure is held at {level_bar:.3g} bar throughout" in err
     assert ("within 0.06 bar of each other): one hold, no sweep to find steps in: expected a "
             "record of the pressure rising; where each pressure step was logged to a file of "
-            "its own, import them as one table: a row per step (its pressure and force, and "
-            "direction up or down), or the files one after another on the clock they were logged "
-            "by (a hold's creep is timed from its step)") in err
+            "its own, import the files together as one run: mkm import \"FOLDER/*.csv\" (or "
+            "each file named)") in err
     assert not (tmp_path / "runs").exists()
 
 
@@ -2797,3 +2796,177 @@ def test_a_closing_rest_after_an_exponential_vent_is_zeroed_where_its_force_sett
         assert ("the vented rest that ends the record still falls (its force's trend beyond "
                 "2.5 standard errors to its end): not taken as the zero") in err
         assert recorded["tare_N"] == pytest.approx(4.0, abs=4 * 0.3)
+
+
+#: a file per pressure step: 20 s holds at 10 Hz, each reached in 1 s, logged from 3 s into
+#: the hold to its end (the settling not logged); vented first and last
+STEP_FILE_LEVELS = [0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.5, 1.0, 0.5, 0.0]
+HOLD_S, UNLOGGED_S = 20.0, 3.0
+
+
+def _files_per_step(folder: Path, clock_restarts: bool = True, seed: int = 8):
+    """The staircase of :data:`STEP_FILE_LEVELS` through friction (3 %) and creep (5 %, tau
+    5 s) as a lab logs it, a file per step (``step0.csv`` to ``step10.csv``, numbers unpadded):
+    comment lines, then ``Temp``, ``Force [N]``, ``Time [s]``, ``Pressure [kPa]``, each file's
+    clock from 0 (``clock_restarts``) or the record's. The files, the logged clock on the
+    record's, and the true force there."""
+    rng = np.random.default_rng(seed)
+    knots_t, knots_p = [0.0], [0.0]
+    for k, level in enumerate(STEP_FILE_LEVELS):
+        knots_t += [k * HOLD_S + 1.0, (k + 1) * HOLD_S]
+        knots_p += [level, level]
+    t = np.round(np.arange(0.0, HOLD_S * len(STEP_FILE_LEVELS), 0.1), 1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.05, 5.0)
+    folder.mkdir()
+    files, logged = [], (t % HOLD_S) >= UNLOGGED_S - 1e-9
+    for k, level in enumerate(STEP_FILE_LEVELS):
+        rows = logged & (t >= k * HOLD_S) & (t < (k + 1) * HOLD_S)
+        clock = t[rows] - t[rows][0] if clock_restarts else t[rows]
+        path = folder / f"step{k}.csv"
+        path.write_text(f"# hand-made muscle LM-8, set pressure {level:.1f} bar\n"
+                        "# logged after 3 s settling\n" + pd.DataFrame({
+                            "Temp [degC]": np.round(22.4 + rng.normal(0, 0.05, rows.sum()), 2),
+                            "Force [N]": np.round(truth[rows] + rng.normal(0, 0.2, rows.sum()),
+                                                  3),
+                            "Time [s]": clock,
+                            "Pressure [kPa]": np.round(100 * p[rows]
+                                                       + rng.normal(0, 0.3, rows.sum()), 2)}
+                        ).to_csv(index=False))
+        files.append(path)
+    return files, t[logged], truth[logged]
+
+
+def test_a_record_logged_a_file_per_step_imports_as_one_run(tmp_path, mkm_cli):
+    # a lab that logs each pressure step to a file, each file's clock restarting: the pattern
+    # was "no such file", each file alone "one hold"
+    from mkm.core.records import file_sha256
+
+    files, clock, _ = _files_per_step(tmp_path / "LM8")
+    code, out, err = mkm_cli(["import", str(tmp_path / "LM8" / "step*.csv"), *MUSCLE,
+                              "--eps", "0", "--between-files", "3.1s", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 0, err
+    (run,) = [load_run(line) for line in out.strip().splitlines()]
+    recorded = run.meta.imported_from
+    # file-name order with its numbers by value: step2 before step10
+    assert [f["file"] for f in recorded["files"]] == [f.name for f in files]
+    assert [f["sha256"] for f in recorded["files"]] == [file_sha256(f) for f in files]
+    assert recorded["clock"] == "restarts" and recorded["between_files_s"] == 3.1
+    assert recorded["file"] == "step0.csv and 10 more"
+    # 3.1 s from each file's last sample to the next one's first: the record's own clock
+    # (from its first logged sample), to the rounding of the files' tenths
+    assert run.samples["time_s"].to_numpy() == pytest.approx(clock - UNLOGGED_S, abs=1e-9)
+    assert ("11 files joined in the order given (step0.csv first), each file's clock "
+            "restarting at its start: each placed 3.1 s (--between-files) after the one "
+            "before") in err
+    assert run.steps["direction"].tolist() == ["up"] * 5 + ["down"] * 4
+    assert run.steps["set_pressure_bar"].tolist() == pytest.approx(
+        STEP_FILE_LEVELS[1:-1], abs=0.01)
+
+
+def test_files_whose_clock_continues_are_ordered_by_it(tmp_path, mkm_cli):
+    # given out of order, the clock the files share orders them and keeps the time between
+    # them as logged
+    files, clock, _ = _files_per_step(tmp_path / "LM8", clock_restarts=False)
+    shuffled = [files[k] for k in (3, 0, 10, 1, 2, 4, 5, 6, 7, 8, 9)]
+    (run,), err = _import(mkm_cli, shuffled[0], *map(str, shuffled[1:]), *MUSCLE, "--eps", "0")
+    assert run.meta.imported_from["clock"] == "continues"
+    assert [f["file"] for f in run.meta.imported_from["files"]] == [f.name for f in files]
+    assert run.samples["time_s"].to_numpy() == pytest.approx(clock - UNLOGGED_S, abs=1e-9)
+    assert ("11 files joined on their clock, which continues from one to the next: ordered by "
+            "it, step0.csv first, the time between files as logged (3.1-3.1 s)") in err
+
+
+def test_files_of_date_times_are_ordered_and_refused_by_them(tmp_path, mkm_cli):
+    # a logger's date-times: the files follow one another on them, whatever their names; one
+    # that overlaps another is named with its moment
+    files, clock, _ = _files_per_step(tmp_path / "LM8", clock_restarts=False)
+    start = datetime.datetime(2026, 12, 5, 14, 5)
+    for k, path in enumerate(files):
+        frame = pd.read_csv(path, comment="#")
+        frame["Time [s]"] = [(start + datetime.timedelta(seconds=float(t))).isoformat(
+            sep=" ", timespec="milliseconds") for t in frame["Time [s]"]]
+        frame.rename(columns={"Time [s]": "Timestamp"}).to_csv(
+            tmp_path / "LM8" / f"{chr(ord('k') - k)}.csv", index=False)
+        path.unlink()
+    (run,), err = _import(mkm_cli, tmp_path / "LM8" / "*.csv", *MUSCLE, "--eps", "0")
+    assert [f["file"] for f in run.meta.imported_from["files"]][:3] == ["k.csv", "j.csv", "i.csv"]
+    assert run.samples["time_s"].to_numpy() == pytest.approx(clock - UNLOGGED_S, abs=1e-6)
+    _rewritten_time(tmp_path / "LM8" / "j.csv", 30.0)
+    code, _, err = mkm_cli(["import", str(tmp_path / "LM8" / "*.csv"), *MUSCLE, "--eps", "0",
+                            "--out", str(tmp_path / "again")])
+    assert code == 2 and err.count("\n") == 1
+    # j.csv 30 s late, at 53-69.9 s: into i.csv's 43-59.9 s
+    assert ("j.csv: its clock (from 2026-12-05 14:05:53, 16.9 s) overlaps i.csv's (from "
+            "2026-12-05 14:05:43, 16.9 s), and not every file's clock starts at 0") in err
+
+
+def _rewritten_time(path: Path, late_s: float) -> None:
+    """``path``'s date-times ``late_s`` seconds later."""
+    frame = pd.read_csv(path)
+    frame["Timestamp"] = [(datetime.datetime.fromisoformat(t) + datetime.timedelta(
+        seconds=late_s)).isoformat(sep=" ", timespec="milliseconds") for t in frame["Timestamp"]]
+    frame.to_csv(path, index=False)
+
+
+def test_a_record_logged_a_file_per_step_identifies_its_creep(tmp_path, mkm_cli):
+    # each hold's first 3 s not logged: joined with the time between the files, the creep's
+    # time constant is the record's (5 s), as from the whole record
+    _files_per_step(tmp_path / "LM8")
+    code, out, err = mkm_cli(["import", str(tmp_path / "LM8" / "*.csv"), *MUSCLE, "--eps", "0",
+                              "--between-files", "3.1", "--out", str(tmp_path / "runs")])
+    assert code == 0, err
+    code, out, err = mkm_cli(["identify", out.strip(), "--model", "thickwall", "--search",
+                              "model", "--params", "theta0,friction,creep", "--out",
+                              str(tmp_path / "id"), "--workers", "1"])
+    assert code == 0, err
+    values = {row["parameter"]: row["value"] for row in json.loads(
+        (tmp_path / "id" / "identification.json").read_text())["parameters"]}
+    # 0.2 N of noise on ~300 N: as test_a_staircase_in_time_identifies_creep_where_holds_were_timed
+    assert values["theta0_deg"] == pytest.approx(THETA0, abs=0.2)
+    assert values["creep_fraction"] == pytest.approx(0.05, abs=0.015)
+    assert values["creep_tau_s"] == pytest.approx(5.0, abs=1.5)
+
+
+@pytest.mark.parametrize("case, message", [
+    ("units", "step4.csv: its pressure column differs from the first file's (step0.csv: "
+     "'Pressure [kPa]' [kPa]; step4.csv: 'Pressure [bar]' [bar]): expected the same columns in "
+     "the same units in every file of one run"),
+    ("overlap", "step3.csv: its clock (85-101.9 s) overlaps step4.csv's (83-99.9 s), and not "
+     "every file's clock starts at 0: expected the files of one run, one after another on one "
+     "clock or each counting from its own start"),
+    ("muscle", "step1.csv: muscle 'LM-9' in column 'Muscle', step0.csv: 'LM-8': expected the "
+     "files of one muscle's run"),
+    ("between", "--between-files 3 s: the files' clock continues from one to the next, its times "
+     "give the time between them: expected the option only for files whose clocks each "
+     "restart"),
+    ("nothing", "no file matches this pattern: expected one or more tables"),
+])
+def test_files_that_are_not_one_run_are_refused(case, message, tmp_path, mkm_cli):
+    files, _, _ = _files_per_step(tmp_path / "LM8",
+                                  clock_restarts=case not in ("overlap", "between"))
+    argv = [str(tmp_path / "LM8" / "step*.csv")]
+    if case == "units":
+        frame = pd.read_csv(files[4], comment="#")
+        frame["Pressure [kPa]"] /= 100
+        frame.rename(columns={"Pressure [kPa]": "Pressure [bar]"}).to_csv(files[4], index=False)
+    elif case == "overlap":  # step3's clock 22 s on: into step4's
+        frame = pd.read_csv(files[3], comment="#")
+        frame["Time [s]"] = np.round(frame["Time [s]"] + 22.0, 1)
+        frame.to_csv(files[3], index=False)
+        argv = [str(files[2]), str(files[3]), str(files[4])]
+    elif case == "muscle":
+        for k, path in enumerate(files):
+            frame = pd.read_csv(path, comment="#")
+            frame.insert(0, "Muscle", "LM-9" if k == 1 else "LM-8")
+            frame.to_csv(path, index=False)
+    elif case == "between":
+        argv += ["--between-files", "3"]
+    else:
+        argv = [str(tmp_path / "LM8" / "run*.csv")]
+    code, out, err = mkm_cli(["import", *argv, *MUSCLE, "--eps", "0", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert message in err
+    assert not (tmp_path / "runs").exists()
