@@ -73,6 +73,11 @@ OVERPRESSURE_HARD_FRACTION = 0.10
 #: The bench marker takes milliseconds on a local disk; a state folder slower than this [s] hangs
 #: (a network share), and the loop goes on without it rather than leave the interlocks unwatched.
 MARKER_WAIT_S = 0.5
+#: the over-force interlock judges readings from this fraction of ``max_pressure_bar`` up: a
+#: monitor reading low hides over-pressure only near the limit (one reading 0.8 of the pressure
+#: hides it from 0.8 of the limit), and one that reads less than half the pressure its
+#: regulator holds (frozen near 0 bar) is the follow and stuck-monitor interlocks'
+OVERFORCE_FROM_FRACTION = 0.5
 #: a load cell whose input holds one ADC code this long [s] of sample time, where its tare
 #: strayed more than a step, is stuck or disconnected: no live cell's noise stays on one code
 #: (twenty readings at 10 Hz; one step of noise keeps two readings on one code at most a third
@@ -714,7 +719,8 @@ class Acquisition:
         reading since the muscle was last vented, also taken its accuracy high: the braid
         holds a force at most at what that peak pulled up; creep only takes force off). Only
         with an electronic regulator, after the tare (forces before it are from the configured
-        zero), under a pressure commanded, and not within ``safety.pressure_follow_s`` of a
+        zero), under a pressure commanded, at a reading from :data:`OVERFORCE_FROM_FRACTION`
+        of ``max_pressure_bar`` up, and not within ``safety.pressure_follow_s`` of a
         command that fell: a muscle exhausts through its tube behind the regulator's sensor,
         and holds more than the reading meanwhile (on a rise it lags below it, which only
         lowers the force)."""
@@ -736,6 +742,8 @@ class Acquisition:
         reading, force_N = statistics.median(self._over3_bar), statistics.median(self._over3_N)
         offset_bar, gain = self.config.regulator.reading_bounds()
         measured = reading + self.monitor_low_bar
+        if measured < OVERFORCE_FROM_FRACTION * self.config.regulator.max_pressure_bar:
+            return None
         high_bar = measured + offset_bar + gain * measured
         pressure_bar, _, most_N = self._bounds()
         most = float(np.interp(high_bar, pressure_bar, most_N))
@@ -759,7 +767,8 @@ class Acquisition:
                 f"monitor reading {measured:.3f} bar, more than the muscle pulls there: the "
                 f"strongest muscle the declared tolerances allow pulls at most {most:.1f} N at "
                 f"eps {self.config.muscle.eps:g} ({where}), and the load cell's accuracy is "
-                f"{accuracy_N:.1f} N: the pressure monitor reads low (a gain or zero error; the "
+                f"{accuracy_N:.1f} N: the pressure monitor reads low (a gain or zero error, or "
+                "stuck; the "
                 "regulator holds that reading at the command and delivers more, which the "
                 "over-pressure limit does not see), or the load cell reads high; check the "
                 "monitor against a reference gauge and the load cell with a known mass")
