@@ -525,7 +525,11 @@ class Acquisition:
                         f"the muscle's force by {rise_N:.1f} N or more at eps "
                         f"{self.config.muscle.eps:g} ({rise_N / step_N:.0f} ADC steps of "
                         f"{step_N:.2f} N): a stuck or disconnected load cell, behind which the "
-                        "force limit is not watched; check its cable, amplifier and supply")
+                        "force limit is not watched; check its cable, amplifier and supply"
+                        + ("" if self.electronic else
+                           ", or whether a reading was typed before the manometer settled (the "
+                           "pressure still on its way, the muscle below it): type each once it "
+                           "holds still"))
         return self.unmoved
 
     def _bounds(self) -> tuple:

@@ -836,6 +836,31 @@ def test_a_quiet_load_cell_under_a_hand_regulator_turned_slowly_is_not_called_st
         r"force by 67\.0 N or more at eps 0\.2 ", stuck.reason), stuck.reason
 
 
+def test_a_quiet_load_cell_under_a_hand_regulator_read_before_it_settles_is_told_so(tmp_path):
+    # The simulated operator types the manometer's reading as the regulator is turned, the
+    # pressure still rising behind it (a real operator who types early does the same): at eps
+    # 0.2 the muscle pulls nothing as its pressure nears the threshold, and the quiet live cell,
+    # on one code, is judged at the reading typed. Not judging the samples after a reading
+    # typed (for pressure_follow_s) would blind the interlock through pre-conditioning's hold,
+    # as long: a cell stuck at 1.5 s was found at 1.25 bar in the staircase, not at 2.5 bar. The
+    # trip stands, and its reason names the early reading beside the stuck cell
+    c = load_config().replace(muscle={"eps": 0.2}, regulator={"kind": "manual"},
+                              sim={"noise_V": 0.0003})
+    live = acquire(c, out_root=tmp_path, **QUIET)
+    assert live.status == "failed" and re.match(
+        r"force interlock: the load cell read 0\.0146 V \(-0\.04 N\) unchanged from 3\.8 s "
+        r"while the manometer's reading rose from 0\.00 to 2\.50 bar, which moves the muscle's "
+        r"force by 67\.0 N or more at eps 0\.2 .*: a stuck or disconnected load cell, .*; check "
+        r"its cable, amplifier and supply, or whether a reading was typed before the manometer "
+        r"settled \(the pressure still on its way, the muscle below it\): type each once it "
+        r"holds still; vented", live.reason), live.reason
+    electronic = acquire(c.replace(regulator={"kind": "electronic"},
+                                   sim={"faults": {"loadcell_stuck_at_s": 1.5}}),
+                         out_root=tmp_path, **QUIET)
+    assert "force interlock: the load cell read" in electronic.reason
+    assert "typed" not in electronic.reason  # an electronic regulator has no reading typed
+
+
 def test_a_quiet_load_cell_on_one_code_under_a_slack_muscle_trips_nothing(config, tmp_path):
     # At eps 0.25 the muscle is slack up to 2.48 bar (its FE force), the thick-wall model at
     # the declared tolerances' weakest says so too: the steps at 0.5 and 1.0 bar read the
