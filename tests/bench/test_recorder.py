@@ -1424,6 +1424,7 @@ def test_samples_the_state_folder_cannot_keep_either_are_said_and_hold_nothing(
     from mkm.bench.unvented import STATE_WAIT_S
 
     _read_only_from_60(monkeypatch)
+    _loop_waits_for_the_write(monkeypatch, "samples", lambda rows: rows[-1].sample >= 60)
     monkeypatch.setattr(recorder, "STATE_WAIT_S", STATE_WAIT_S)  # the wait a hang ends
     release = threading.Event()
 
