@@ -105,6 +105,9 @@ class Recorder:
         self.step_rows: list[StepRecord] = []  # steps.csv's rows, in order: the vent check's
         # force per bar (mkm.bench.vent.force_per_bar)
         self._refused = False  # an append of samples failed (the disk)
+        # a step's or a command's row the disk refused: the run folder does not hold the whole
+        # record, whether the loop was told at its next block or after its last step
+        self._rows_lost = False
         # rows taken from the queue and not on disk yet: a block being written, or rows the disk
         # refused, written again first with the next block (samples.csv cut back to its whole
         # rows before, _reopen), and once more at the end (refusals)
@@ -213,8 +216,10 @@ class Recorder:
         ``_failures``."""
         try:
             what = self._what(kind, payload)
+            lost = kind in ("step", "command")  # a row refused is never written again
             try:
                 self._write(kind, payload)
+                lost = False
                 self._unsynced = self._unsynced or kind in ("samples", "step", "command")
                 if kind == "sync" or (self._unsynced and
                                       time.monotonic() - self._synced_at >= SYNC_EVERY_S):
@@ -222,12 +227,12 @@ class Recorder:
                     if kind != "sync":
                         self.writer.sync()
                     self._synced_at, self._unsynced = time.monotonic(), False
-            except OSError as exc:
+            except Exception as exc:  # the disk, or a bug: said in the reason, not lost
+                failure = exc if isinstance(exc, OSError) else \
+                    OSError(f"{type(exc).__name__}: {exc}")
                 with self._cond:
-                    self._failures.append((what, exc))
-            except Exception as exc:  # a bug: said in the reason, not lost
-                with self._cond:
-                    self._failures.append((what, OSError(f"{type(exc).__name__}: {exc}")))
+                    self._failures.append((what, failure))
+                    self._rows_lost = self._rows_lost or lost
         finally:
             with self._cond:
                 self._busy = False
@@ -411,7 +416,7 @@ class Recorder:
         problems = []
         if self.crashed:  # what it held, written here
             problems.append(self._write_rest())
-        whole = not self.held_rows
+        whole = not self.held_rows and not self._rows_lost
         self.meta.status, self.meta.reason = status, reason
         self.meta.ended_utc = provenance()["date_utc"]
         self.writer.release_reserve()  # a disk that filled mid-run: the room for this record

@@ -855,6 +855,47 @@ def _read_only_from_60(monkeypatch, first: int = 60) -> list[int]:
     return queued
 
 
+def _loop_waits_for_the_write(monkeypatch, method: str, first) -> None:
+    """The loop waits for the recorder's thread to write what ``Recorder.<method>`` queued, the
+    first time ``first(payload)`` holds: a refusal is then made before the loop's next block,
+    as on an idle machine (on a loaded one the thread, trailing the virtual clock, may reach it
+    only after the last step)."""
+    from mkm.bench.recorder import Recorder
+
+    queue, waited = getattr(Recorder, method), []
+
+    def then_wait(self, payload):
+        queue(self, payload)
+        if not waited and first(payload):
+            waited.append(self.wait_written(60))  # a net under a broken fix: 60 s
+
+    monkeypatch.setattr(Recorder, method, then_wait)
+
+
+def _written_after_the_last_step(monkeypatch, method: str, first) -> None:
+    """``RunWriter.<method>`` waits, from the first call where ``first(payload)`` holds, until
+    the run waits for its record (the shutdown, after the last step): the order of a loaded
+    machine, the recorder's thread trailing the loop by the whole run."""
+    import threading
+
+    from mkm.bench.recorder import Recorder
+
+    ended, write, wait_written = threading.Event(), getattr(RunWriter, method), \
+        Recorder.wait_written
+
+    def late(self, payload):
+        if first(payload):
+            ended.wait(60)  # a net under a broken fix: 60 s
+        return write(self, payload)
+
+    def waited_at_the_end(self, timeout_s=None):
+        ended.set()
+        return wait_written(self, timeout_s)
+
+    monkeypatch.setattr(RunWriter, method, late)
+    monkeypatch.setattr(Recorder, "wait_written", waited_at_the_end)
+
+
 def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(config, tmp_path,
                                                                              monkeypatch):
     # a run folder that went read-only at sample 60 (a share remounted, permissions changed)
@@ -868,8 +909,9 @@ def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(con
     from mkm.bench.run import acquire
 
     queued = _read_only_from_60(monkeypatch)
+    _loop_waits_for_the_write(monkeypatch, "samples", lambda rows: rows[-1].sample >= 60)
     result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
-    assert result.status == "failed" and result.exit_code == 2
+    assert result.status == "failed" and result.exit_code == 2, result.reason
     kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
     assert f"are kept in {kept}" in result.reason
     on_disk = pd.read_csv(result.path / "samples.csv")["sample"].tolist()
@@ -879,6 +921,28 @@ def test_samples_a_read_only_run_folder_refuses_are_kept_elsewhere_and_named(con
     # run.json refused too: the marker keeps the outcome, and with it the file's name
     marker, = (tmp_path / "mkm-state" / "benches").glob("*/*.json")
     assert str(kept) in json.loads(marker.read_text(encoding="utf-8"))["outcome"]["reason"]
+
+
+def test_samples_refused_mid_run_but_written_after_the_last_step_leave_it_complete_exit_2(
+        config, tmp_path, monkeypatch):
+    # on a loaded machine the recorder's thread trails the virtual clock by the whole run: the
+    # read-only folder refuses sample 60 only once the loop has done its last step. The run,
+    # every step done and vented, is complete; its record is not whole in its folder: exit 2,
+    # the reason naming the refusal and where the samples are kept
+    from mkm.bench.run import EXIT_STORAGE, acquire
+
+    queued = _read_only_from_60(monkeypatch)
+    _written_after_the_last_step(monkeypatch, "append_samples",
+                                 lambda rows: rows[-1].sample >= 60)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    assert (result.status, result.exit_code) == ("complete", EXIT_STORAGE), result.reason
+    kept = tmp_path / "mkm-state" / "unwritten" / f"{result.path.name}-samples.csv"
+    assert result.reason.startswith(
+        f"all 3 steps done; the disk refused samples 60 (PermissionError: [Errno 13] Permission "
+        f"denied), and {len(queued) - 61} later write(s); {len(queued) - 60} samples could not "
+        f"be written to the run folder: samples 60-{queued[-1]} are kept in {kept}; "), \
+        result.reason
+    assert not result.manual_vent_required
 
 
 def test_a_run_whose_refused_samples_are_kept_elsewhere_says_so_when_read(config, tmp_path,
@@ -1310,6 +1374,7 @@ def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept
 
     monkeypatch.setattr(Recorder, "samples", spy)
     monkeypatch.setattr(RunWriter, "append_step", dying)
+    _loop_waits_for_the_write(monkeypatch, "step", lambda row: True)
     result = acquire(config, out_root=tmp_path, notify=lambda m: None)
     assert result.status == "failed" and result.exit_code == 2, result.reason
     # the reason names what the disk refused: the row of step 0, not samples
@@ -1321,6 +1386,28 @@ def test_a_step_row_the_disk_refuses_stops_the_run_vented_with_every_sample_kept
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
     assert run.samples["sample"].tolist() == queued  # every sample, once, in order
     assert (run.samples["phase"] == "vent").any()  # the vent check's decay with them
+
+
+def test_step_rows_refused_after_the_last_step_leave_the_run_complete_exit_2(config, tmp_path,
+                                                                            monkeypatch):
+    # on a loaded machine the recorder's thread reached the steps' rows only once the loop had
+    # done its last step, and steps.csv refused all three (EIO): the run exited 0, as a whole
+    # record does, steps.csv holding none of them. Now the record not whole in its folder
+    # exits 2; the run, every step done and vented, is complete, the reason naming the refusal
+    from mkm.bench.run import EXIT_STORAGE, acquire
+
+    def dying(self, row):
+        raise OSError(errno.EIO, "Input/output error")
+
+    monkeypatch.setattr(RunWriter, "append_step", dying)
+    _written_after_the_last_step(monkeypatch, "append_step", lambda row: True)
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert (result.status, result.exit_code) == ("complete", EXIT_STORAGE), result.reason
+    assert result.reason == ("all 3 steps done; recording failed for step 0 (OSError: [Errno 5] "
+                             "Input/output error), and 2 later write(s)")
+    run = load_run(result.path)
+    assert run.meta.status == "complete" and len(run.steps) == 0
+    assert run.meta.vent_check["verified"]
 
 
 @pytest.mark.parametrize("fault", ["refused", "hangs"])
@@ -1337,6 +1424,7 @@ def test_samples_the_state_folder_cannot_keep_either_are_said_and_hold_nothing(
     from mkm.bench.unvented import STATE_WAIT_S
 
     _read_only_from_60(monkeypatch)
+    _loop_waits_for_the_write(monkeypatch, "samples", lambda rows: rows[-1].sample >= 60)
     monkeypatch.setattr(recorder, "STATE_WAIT_S", STATE_WAIT_S)  # the wait a hang ends
     release = threading.Event()
 

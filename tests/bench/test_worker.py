@@ -389,7 +389,8 @@ def test_an_interlock_vent_whose_record_fails_is_not_called_a_failed_vent(config
 
     monkeypatch.setattr(RunWriter, "append_command", full_for_the_interlock)
     result, run = record(config, tmp_path, nan_force_at_s=5.0)
-    assert result.status == "aborted" and result.exit_code == 1
+    # commands.csv lacks the vent's row: the record is not whole in its folder, exit 2
+    assert result.status == "aborted" and result.exit_code == 2
     assert "vent command failed" not in result.reason and "VENT BY HAND" not in result.reason
     assert "; vented; recording failed for the interlock vent command of 0 bar (OSError: " \
            "[Errno 28] No space left on device)" in result.reason
