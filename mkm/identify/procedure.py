@@ -99,8 +99,8 @@ BRAID_TAKES_CREEP = 0.9
 #: bench_identify_rubbers seed 20261223), and the tolerance is already in every interval
 CREEP_OR_GAIN_TOLERANCES = 3.0
 #: the step in eps [fraction] the force's sensitivity to the held length is differenced over
-#: (:func:`frame_hint`): a tenth of a 250 mm muscle's 0.4 % rest-length precision would drown in
-#: the sweeps' rounding, one point stays linear over the frames a bench has (0.5-2 mm at capacity)
+#: (:func:`frame_hint`): about the shortening a bench's frame gives (0.5-2 mm at the cell's
+#: capacity on a 150 mm muscle), over which the force is near linear in eps
 FRAME_EPS_STEP = 0.01
 #: a frame is named where fitting its compliance takes away at least this share of the misfit's
 #: chi-square excess over its degrees of freedom (and more than a rest length declared wrong)

@@ -250,7 +250,7 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     held = {"separated": False, "rejects_silastic_ratio": True, "braid_in_doubt": True,
             "assumed_from": "Silastic S's"}
     goodness = SimpleNamespace(judged=True, misfit=[object()], reduced=145.0, birge_ratio=12.0,
-                               ratio_freed=None, pulls_late=False)
+                               ratio_freed=None, pulls_late=False, frame=None)
     verdict = _verdict(goodness, held)
     assert verdict.startswith("verdict: a misfit (chi2/nu 145)")
     assert ("first, the runs reject Silastic S's rubber ratio, kept only because the braid is "
@@ -268,13 +268,20 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     assert "--braid" not in said
     # the --params to type, as the note gives them (it said '--params ...,L0')
     assert "fit its rest length (--params theta0,rubber,offset,L0) or a gap" in said
+    # a frame that explains the misfit comes before both
+    framed = _verdict(SimpleNamespace(**{**vars(late), "frame": {"stiffness_N_per_mm": 2030.0}}),
+                      held)
+    assert ("the estimates may be biased; first, a frame yielding under the muscle's pull "
+            "(about 2.03e+03 N/mm: the note above) may be what the fit lacks: stiffen the frame "
+            "or measure its stiffness, or measure the muscle's held length under load, and "
+            "identify again; then the notes above") in framed
     within = SimpleNamespace(judged=True, misfit=[], reduced=1.1, birge_ratio=1.0,
-                             ratio_freed=None, pulls_late=False)
+                             ratio_freed=None, pulls_late=False, frame=None)
     assert "--braid" not in _verdict(within, held)
     # a table's fit is not judged, and the Festo DMSP-20-300's map read at its
     # table's 296 mm pulls from 0.43 bar, the fit from 0.04: the note said to fit the rest
     # length, the verdict only to weigh the misses and use calibration.json
-    unjudged = SimpleNamespace(judged=False, misfit=[], pulls_late=True)
+    unjudged = SimpleNamespace(judged=False, misfit=[], pulls_late=True, frame=None)
     said = _verdict(unjudged, held)
     assert said == ("verdict: not judged (the runs show no noise to judge the fit by): first, a "
                     "run declared at its rest length pulls later than the fitted model (the "
