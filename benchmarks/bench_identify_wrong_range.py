@@ -203,7 +203,8 @@ def first_said(verdict: str | None) -> str:
     if not marks:
         return "-"
     first = verdict.split(marks[0])[1]
-    for key, said in (("braid from a creep", "braid, creep or load cell"),
+    for key, said in (("frame yielding", "frame"),
+                      ("braid from a creep", "braid, creep or load cell"),
                       ("load cell", "load cell or creep"),
                       ("rest length", "rest length or gap"), ("braid", "braid"),
                       ("declared tolerances", "declared tolerances"),

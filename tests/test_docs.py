@@ -2677,7 +2677,7 @@ def test_run_benchmarks_refuses_an_unknown_output():
 def test_the_guides_frame_that_yields_is_its_measured_file():
     """calibration.md's words on identify's defaults with a frame that yields: held to
     ``identify_wrong_range_frame.json`` (the verdicts' counts, the misfits, the widening and
-    the braid angle's widest interval, what no misfit line names)."""
+    the braid angle's widest interval, the frame notes' stiffness against the truth's)."""
     import json
 
     record = json.loads((DOCS / "measured" / "identify_wrong_range_frame.json").read_text(
@@ -2705,7 +2705,22 @@ def test_the_guides_frame_that_yields_is_its_measured_file():
             f"{widest['ci_low']:.1f}-{widest['ci_high']:.1f} deg") in said
     sent = ("check the monitor's zero, the load cell's calibration, the muscle's wall and "
             "braid; or fit its rest length")
-    assert all(sent in d["misfit_line"] and "frame" not in d["misfit_line"] for d in draws)
+    assert all(sent in d["misfit_line"] for d in draws)
+    # the frame note: its fitted stiffness against the truth's, and what the fit leaves
+    notes = [next((n for n in d["notes"] if n.startswith("frame: ")), None) for d in draws]
+    named = [(d, n) for d, n in zip(draws, notes, strict=True) if n]
+    ratio = [float(re.search(r"\(about (\S+) N/mm", n).group(1))
+             / d["muscle"]["truth"]["frame_stiffness_N_per_mm"] for d, n in named]
+    left = [float(re.search(r"\(chi2/nu ([^,)]+)", n).group(1)) for _, n in named]
+    unnamed = [s for s, n in zip(stiffness, notes, strict=True) if not n]
+    assert unnamed == [max(stiffness)]
+    assert all(d["verdict_line"].split("; ")[1].startswith(
+        "first, a frame yielding under the muscle's pull") for d, _ in named)
+    assert (f"{len(named)} of them also name the frame in a `frame:` note, their verdicts "
+            "sending the reader there first, its fitted stiffness "
+            f"{min(ratio):.2f}-{max(ratio):.2f} times the truth's (the frame fitted leaves "
+            f"chi2/nu {min(left):.3g}-{max(left):.3g}); the stiffest frame's "
+            f"({unnamed[0]:.3g} N/mm) is not named") in said
     told = [d for d in draws if d["instrument_warning"]]
     assert all(d["instrument_warning"].startswith("creep or load cell: ") for d in told)
     assert (f"{len(told)} also print the creep-or-load-cell note (the other braid not taking "

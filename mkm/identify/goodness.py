@@ -114,6 +114,9 @@ class Goodness:
     #: a run declared at its rest length pulls later than the fitted model
     #: (:func:`mkm.identify.procedure._rest_length_hint`): a length or a gap, not an instrument
     pulls_late: bool = False
+    #: a frame yielding under the muscle's pull explains the misfit
+    #: (:func:`mkm.identify.procedure.frame_hint`: its stiffness, what it lowers chi2 by, the note)
+    frame: dict | None = None
 
     @property
     def reduced(self) -> float:
@@ -252,6 +255,8 @@ class Goodness:
                 "misfit_line": self.line(), "widened": self.widened,
                 **({"ratio_freed": self.ratio_freed} if self.ratio_freed else {}),
                 **({"pulls_late": True} if self.pulls_late else {}),
+                **({"frame": {k: v for k, v in self.frame.items() if k != "said"}}
+                   if self.frame else {}),
                 "branches": [b.record() for b in self.branches]}
 
 

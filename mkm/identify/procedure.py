@@ -31,10 +31,12 @@ from __future__ import annotations
 
 import dataclasses
 import itertools
+import math
 import time
 import warnings
 
 import numpy as np
+from scipy import optimize
 from scipy.stats import chi2
 
 from mkm.fem.batch import Runner
@@ -96,6 +98,13 @@ BRAID_TAKES_CREEP = 0.9
 #: the model's form leaves for a creep to take (a 0.14 % creep at 1 s on an exact cell,
 #: bench_identify_rubbers seed 20261223), and the tolerance is already in every interval
 CREEP_OR_GAIN_TOLERANCES = 3.0
+#: the step in eps [fraction] the force's sensitivity to the held length is differenced over
+#: (:func:`frame_hint`): about the shortening a bench's frame gives (0.5-2 mm at the cell's
+#: capacity on a 150 mm muscle), over which the force is near linear in eps
+FRAME_EPS_STEP = 0.01
+#: a frame is named where fitting its compliance takes away at least this share of the misfit's
+#: chi-square excess over its degrees of freedom (and more than a rest length declared wrong)
+FRAME_TAKES = 0.5
 
 
 def identify(run_dirs, params: str | None = None, model: str = "axisym",
@@ -480,6 +489,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      "of the force, which runs without timed holds cannot fit and which pulls "
                      "the braid angle up (the model-form term creep)")
     notes += [line for line in (fitness.line(), fitness.zero_line()) if line]
+    fitness.frame = frame_hint(source, runs, best, fitness)
+    notes += [fitness.frame["said"]] if fitness.frame else []
     late = _rest_length_hint(runs, fe, best, fitness, groups)
     fitness.pulls_late = bool(late)
     notes += late
@@ -687,6 +698,77 @@ def _rest_length_hint(runs, fe, best, fitness, groups) -> list[str]:
                          f"rest length (--params {given},L0) or a gap (--params {given},gap, "
                          "with --model thickwall or axisym)")
     return notes
+
+
+def frame_hint(source, runs, best, fitness) -> dict | None:
+    """Where the fit misfits: whether a frame yielding under the muscle's pull explains it.
+
+    A frame (fixtures, load cell) of compliance ``c`` [mm/N] holds the muscle at ``eps + F c /
+    L0``: its static force moves by ``dF/deps F c / L0``, a column from one more sweep per run at
+    ``eps`` + :data:`FRAME_EPS_STEP`. Fitted with ``c >= 0`` through a linearised refit of the
+    fit's own parameters (:func:`_refitted`), against a rest length declared wrong (``dF/deps
+    dL / L0``, either sign; where the fit leaves ``L0`` out), which looks alike at one eps but
+    not across eps and pressures. Named (a record with its note, ``said``) where the frame takes
+    :data:`FRAME_TAKES` of the chi-square's excess away and more than the rest length does;
+    else None."""
+    if not fitness.misfit or not fitness.judged:
+        return None
+    tables = source.tables(runs, best.values)
+    top_N = max(float(np.max(F)) for _, F in tables)
+    if not top_N > 0:
+        return None
+    shifted = [dataclasses.replace(run, muscle={**run.muscle, "eps": run.eps + FRAME_EPS_STEP})
+               for run in runs]
+    # the force's change when the held length shortens by FRAME_EPS_STEP (at the largest force,
+    # for the frame): never below the force itself, so no table is clipped at zero
+    steps = [(grid, np.interp(grid, *moved) - F) for (grid, F), moved in
+             zip(tables, source.tables(shifted, best.values), strict=True)]
+    frame = _hold_change(source, runs, best, [(grid, dF * F / top_N) for (grid, dF), (_, F)
+                                              in zip(steps, tables, strict=True)])
+    length = _hold_change(source, runs, best, steps)
+
+    def refit_chi2(column, shift: float) -> float:
+        """All steps' chi-square after the linearised refit with ``column`` at ``shift`` of
+        eps (at the largest force, for the frame)."""
+        moved = _refitted(best, best.residual_N + shift / FRAME_EPS_STEP * column)
+        return goodness.assess(runs, dataclasses.replace(best, residual_N=moved)).chi2
+
+    # the linearised refit alone, the base both are compared with (the fit minimises every
+    # hold sample's residual, not the steps' chi-square)
+    base = refit_chi2(frame, 0.0)
+    # up to a tenth of the muscle's length
+    at_top = optimize.minimize_scalar(lambda e: refit_chi2(frame, e), bounds=(0.0, 0.1),
+                                      method="bounded", options={"xatol": 1e-6}).x
+    with_frame = refit_chi2(frame, at_top)
+    rest = (math.inf if "L0_mm" in best.names else
+            optimize.minimize_scalar(lambda e: refit_chi2(length, e), bounds=(-0.1, 0.1),
+                                     method="bounded", options={"xatol": 1e-6}).fun)
+    lowered, rest_lowered = base - with_frame, base - rest
+    if not (at_top > 0 and base > fitness.nu and lowered >= FRAME_TAKES * (base - fitness.nu)
+            and lowered > rest_lowered):
+        return None
+    # the shift is eps at the largest force: of the run that pulls it
+    L0_mm = max((float(np.max(F)), float(run.muscle["L0_mm"]))
+                for (_, F), run in zip(tables, runs, strict=True))[1]
+    compliance = at_top * L0_mm / top_N
+    stiffness = 1.0 / compliance
+    within = with_frame <= fitness.nu
+    rest_said = ("" if "L0_mm" in best.names else
+                 f", where a rest length declared wrong lowers it by {rest_lowered:.3g}")
+    return {"stiffness_N_per_mm": float(f"{stiffness:.3g}"),
+            "yield_at_largest_force_mm": float(f"{top_N * compliance:.3g}"),
+            "chi2_lowered": round(float(lowered), 3),
+            "chi2_per_nu": round(float(with_frame / fitness.nu), 3),
+            **({} if "L0_mm" in best.names else
+               {"rest_length_chi2_lowered": round(float(rest_lowered), 3)}),
+            "said": (f"frame: a frame, fixtures or load cell yielding under the muscle's pull "
+                     f"(about {stiffness:.3g} N/mm, {top_N * compliance:.3g} mm at the largest "
+                     f"force, {top_N:.4g} N) holds it shorter than declared, more the more it "
+                     f"pulls: fitting that (linearised) lowers chi2 by {lowered:.3g} (chi2/nu "
+                     f"{with_frame / fitness.nu:.3g}"
+                     f"{', within the noise' if within else ''}){rest_said}; stiffen the frame "
+                     "or measure its stiffness, or measure the muscle's held length under load, "
+                     "and identify again")}
 
 
 def _rms(r) -> float:

@@ -591,7 +591,14 @@ def _first(rubber: dict, goodness, groups) -> str:
     """What a misfit's verdict says first: a run declared at its rest length that pulls later
     than the fitted model (a rest length or a gap the runs do not declare: a misfit so large
     that the braid or the rubber's ratio, which barely move the threshold, are read from it
-    too: :func:`pulls_late_first`, ``groups`` what was fitted), else :func:`ratio_first`."""
+    too: :func:`pulls_late_first`, ``groups`` what was fitted), else :func:`ratio_first`; a
+    frame yielding under the muscle's pull before both where it explains the misfit
+    (:func:`mkm.identify.procedure.frame_hint`)."""
+    if goodness.frame:
+        return (f"first, a frame yielding under the muscle's pull (about "
+                f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above) may be what "
+                "the fit lacks: stiffen the frame or measure its stiffness, or measure the "
+                "muscle's held length under load, and identify again; then ")
     return (pulls_late_first(groups) if goodness.pulls_late
             else ratio_first(rubber, goodness.ratio_freed))
 

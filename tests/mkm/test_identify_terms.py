@@ -250,7 +250,7 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     held = {"separated": False, "rejects_silastic_ratio": True, "braid_in_doubt": True,
             "assumed_from": "Silastic S's"}
     goodness = SimpleNamespace(judged=True, misfit=[object()], reduced=145.0, birge_ratio=12.0,
-                               ratio_freed=None, pulls_late=False)
+                               ratio_freed=None, pulls_late=False, frame=None)
     verdict = _verdict(goodness, held)
     assert verdict.startswith("verdict: a misfit (chi2/nu 145)")
     assert ("first, the runs reject Silastic S's rubber ratio, kept only because the braid is "
@@ -268,13 +268,20 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     assert "--braid" not in said
     # the --params to type, as the note gives them (it said '--params ...,L0')
     assert "fit its rest length (--params theta0,rubber,offset,L0) or a gap" in said
+    # a frame that explains the misfit comes before both
+    framed = _verdict(SimpleNamespace(**{**vars(late), "frame": {"stiffness_N_per_mm": 2030.0}}),
+                      held)
+    assert ("the estimates may be biased; first, a frame yielding under the muscle's pull "
+            "(about 2.03e+03 N/mm: the note above) may be what the fit lacks: stiffen the frame "
+            "or measure its stiffness, or measure the muscle's held length under load, and "
+            "identify again; then the notes above") in framed
     within = SimpleNamespace(judged=True, misfit=[], reduced=1.1, birge_ratio=1.0,
-                             ratio_freed=None, pulls_late=False)
+                             ratio_freed=None, pulls_late=False, frame=None)
     assert "--braid" not in _verdict(within, held)
     # a table's fit is not judged, and the Festo DMSP-20-300's map read at its
     # table's 296 mm pulls from 0.43 bar, the fit from 0.04: the note said to fit the rest
     # length, the verdict only to weigh the misses and use calibration.json
-    unjudged = SimpleNamespace(judged=False, misfit=[], pulls_late=True)
+    unjudged = SimpleNamespace(judged=False, misfit=[], pulls_late=True, frame=None)
     said = _verdict(unjudged, held)
     assert said == ("verdict: not judged (the runs show no noise to judge the fit by): first, a "
                     "run declared at its rest length pulls later than the fitted model (the "
@@ -390,12 +397,12 @@ def bench_runs(out, truth: dict, eps: tuple, pressures_bar: tuple, seeds, *,
     return paths
 
 
-def draw_20261601(out, truth: dict, **sim) -> list:
+def draw_20261601(out, truth: dict, eps: tuple = (0.0, 0.1047, 0.2093), **sim) -> list:
     """bench_identify_wrong_range's seed 20261601 (a 32 mm tube to 8 bar on a 1000 kg cell, its
     three eps) on the thick-wall bench, its rubber declared at its ratio (so that the ratio
     Silastic S's would be is not what the fit lacks), with ``truth``'s instruments."""
     return bench_runs(out, {"theta0_deg": 28.0388, "C10_MPa": 0.4485, "C01_MPa": 0.3001,
-                            **truth}, (0.0, 0.1047, 0.2093), steps_to(8.0),
+                            **truth}, eps, steps_to(8.0),
                       (20261601, 20262601, 20263601), hysteresis_fraction=0.00287,
                       model="thickwall",
                       muscle={"id": "gain-off", "D0_mm": 31.92, "t0_mm": 2.79, "L0_mm": 145.6,
@@ -464,10 +471,63 @@ def test_a_slow_creep_on_a_clean_bench_keeps_its_ready_verdict(tmp_path):
     assert table.loc["creep_tau_s", "ci_low"] > 5.0
     assert table.loc["creep_fraction", "ci_low"] <= 0.02 <= table.loc["creep_fraction",
                                                                       "ci_high"]
-    assert result.instrument_warnings == []
+    assert result.instrument_warnings == [] and result.goodness.frame is None
     assert result._verdict_line().endswith("calibration.json is ready for --calibration (mkm "
                                            "report, design, fem solve)")
     assert ", but first, " not in result._verdict_line()
+
+
+def test_a_frame_yielding_under_the_pull_is_named_with_its_stiffness(tmp_path):
+    """bench_identify_wrong_range's seed 20261601 on a frame of 2000 N/mm (2.5 mm at the
+    largest force, 5 kN): the fit misfit (chi2/nu 2.8e3) and its notes named the monitor's
+    zero, the cell, the wall, the braid, the rest length or a gap, never the frame. Fitting the
+    frame's compliance finds its stiffness within 5 % (the column is linearised in eps over the
+    1.7 % the frame shortens the muscle by), well ahead of a rest length declared wrong, and the
+    verdict sends the reader to the frame first."""
+    from mkm.identify import identify
+
+    runs = draw_20261601(tmp_path, {"frame_stiffness_N_per_mm": 2000.0})
+    result = identify(runs, model="thickwall", search="model")
+    frame = result.goodness.frame
+    assert result.goodness.misfit and frame is not None
+    assert frame["stiffness_N_per_mm"] == pytest.approx(2000.0, rel=0.05)
+    assert frame["chi2_lowered"] > 2 * frame["rest_length_chi2_lowered"]
+    assert result.goodness.record()["frame"] == {k: v for k, v in frame.items() if k != "said"}
+    assert frame["said"] in result.notes
+    assert frame["said"].startswith(
+        "frame: a frame, fixtures or load cell yielding under the muscle's pull (about "
+        f"{frame['stiffness_N_per_mm']:.3g} N/mm, {frame['yield_at_largest_force_mm']:.3g} mm at "
+        "the largest force, ")
+    assert frame["said"].endswith(
+        f"where a rest length declared wrong lowers it by "
+        f"{frame['rest_length_chi2_lowered']:.3g}; stiffen the frame or measure its stiffness, "
+        "or measure the muscle's held length under load, and identify again")
+    assert (f"; first, a frame yielding under the muscle's pull (about "
+            f"{frame['stiffness_N_per_mm']:.3g} N/mm: the note above) may be what the fit "
+            "lacks: ") in result._verdict_line()
+
+
+def test_a_rest_length_declared_wrong_is_not_taken_for_a_frame(tmp_path):
+    """The same muscle on a rigid frame, its runs declaring a rest length 2 % short (142.7 mm
+    for 145.6 mm, the eps declared from it): a misfit that a frame's compliance, growing with
+    the force, does not explain as a rest length does (the same shortening at every force):
+    no frame note, the verdict sends the reader to the rest length."""
+    import json
+
+    from mkm.identify import identify
+
+    declared_L0, eps = 142.7, (0.0, 0.1047, 0.2093)
+    runs = draw_20261601(tmp_path / "short", {}, eps=tuple(
+        1 - declared_L0 * (1 - e) / 145.6 for e in eps))
+    for run, at in zip(runs, eps, strict=True):
+        meta = json.loads((run / "run.json").read_text(encoding="utf-8"))
+        meta["muscle"].update(L0_mm=declared_L0, eps=at)
+        (run / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    result = identify(runs, model="thickwall", search="model")
+    assert result.goodness.misfit and result.goodness.frame is None
+    assert not [n for n in result.notes if n.startswith("frame: ")]
+    assert "a frame yielding" not in result._verdict_line()
+    assert "first, a run declared at its rest length pulls later" in result._verdict_line()
 
 
 def test_a_creep_at_its_floor_within_a_few_tolerances_of_the_cell_is_not_called_its_gain(
