@@ -115,7 +115,8 @@ class Goodness:
     #: (:func:`mkm.identify.procedure._rest_length_hint`): a length or a gap, not an instrument
     pulls_late: bool = False
     #: a frame yielding under the muscle's pull explains the misfit
-    #: (:func:`mkm.identify.procedure.frame_hint`: its stiffness, what it lowers chi2 by, the note)
+    #: (:func:`mkm.identify.procedure.frame_hint`: its stiffness, what it lowers chi2 by, the note,
+    #: the refit's shift that the intervals hold)
     frame: dict | None = None
 
     @property
@@ -255,7 +256,7 @@ class Goodness:
                 "misfit_line": self.line(), "widened": self.widened,
                 **({"ratio_freed": self.ratio_freed} if self.ratio_freed else {}),
                 **({"pulls_late": True} if self.pulls_late else {}),
-                **({"frame": {k: v for k, v in self.frame.items() if k != "said"}}
+                **({"frame": {k: v for k, v in self.frame.items() if k not in ("said", "shift")}}
                    if self.frame else {}),
                 "branches": [b.record() for b in self.branches]}
 

@@ -483,13 +483,18 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     notify("model-form terms: the FE model at the optimum (and the other braid)")
     if terms is None:
         terms = model_form_terms(source, fe, runs, best, braid)
+    fitness.frame = frame_hint(source, runs, best, fitness)
+    if fitness.frame:
+        # a frame the misfit names: the intervals hold the muscle fitted with it as well
+        terms = {**terms, "frame": {
+            "kind": "one-sided", "what": f"a frame of {fitness.frame['stiffness_N_per_mm']:.3g} "
+            "N/mm fitted (linearised)", "shift": fitness.frame["shift"]}}
     boot = extend(boot, best, terms)
     if "shift" in terms.get("creep", {}):
         notes.append(f"the intervals hold a creep of up to {100 * UNTIMED_CREEP_FRACTION:g} % "
                      "of the force, which runs without timed holds cannot fit and which pulls "
                      "the braid angle up (the model-form term creep)")
     notes += [line for line in (fitness.line(), fitness.zero_line()) if line]
-    fitness.frame = frame_hint(source, runs, best, fitness)
     notes += [fitness.frame["said"]] if fitness.frame else []
     late = _rest_length_hint(runs, fe, best, fitness, groups)
     fitness.pulls_late = bool(late)
@@ -708,9 +713,10 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
     ``eps`` + :data:`FRAME_EPS_STEP`. Fitted with ``c >= 0`` through a linearised refit of the
     fit's own parameters (:func:`_refitted`), against a rest length declared wrong (``dF/deps
     dL / L0``, either sign; where the fit leaves ``L0`` out), which looks alike at one eps but
-    not across eps and pressures. Named (a record with its note, ``said``) where the frame takes
-    :data:`FRAME_TAKES` of the chi-square's excess away and more than the rest length does;
-    else None."""
+    not across eps and pressures. Named (a record with its note, ``said``, and the refit's
+    ``shift`` of every fitted parameter with the frame, the model-form term ``frame`` of the
+    intervals) where the frame takes :data:`FRAME_TAKES` of the chi-square's excess away and
+    more than the rest length does; else None."""
     if not fitness.misfit or not fitness.judged:
         return None
     tables = source.tables(runs, best.values)
@@ -755,6 +761,7 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
     within = with_frame <= fitness.nu
     rest_said = ("" if "L0_mm" in best.names else
                  f", where a rest length declared wrong lowers it by {rest_lowered:.3g}")
+    shift = _step(best, at_top / FRAME_EPS_STEP * frame)
     return {"stiffness_N_per_mm": float(f"{stiffness:.3g}"),
             "yield_at_largest_force_mm": float(f"{top_N * compliance:.3g}"),
             "chi2_lowered": round(float(lowered), 3),
@@ -766,9 +773,11 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
                      f"force, {top_N:.4g} N) holds it shorter than declared, more the more it "
                      f"pulls: fitting that (linearised) lowers chi2 by {lowered:.3g} (chi2/nu "
                      f"{with_frame / fitness.nu:.3g}"
-                     f"{', within the noise' if within else ''}){rest_said}; stiffen the frame "
-                     "or measure its stiffness, or measure the muscle's held length under load, "
-                     "and identify again")}
+                     f"{', within the noise' if within else ''}){rest_said}; the intervals "
+                     "hold the muscle fitted with it (the model-form term frame); stiffen the "
+                     "frame or measure its stiffness, or measure the muscle's held length under "
+                     "load, and identify again"),
+            "shift": {n: float(v) for n, v in zip(best.names, shift, strict=True)}}
 
 
 def _rms(r) -> float:
