@@ -37,7 +37,9 @@ against the truth's equivalent scale at Silastic S's ratio over the runs' true l
 eps). A draw is ``covered`` when every interval holds the truth, ``warned`` when some miss and
 identify printed a misfit line or a warning about the instruments (a creep it cannot tell from
 the load cell's gain), ``SILENT`` when some miss without either, ``refused`` or ``crashed`` as
-there; ``misfit_line`` and ``instrument_warning`` say whether each was printed at all.
+there; ``misfit_line`` and ``instrument_warning`` say whether each was printed at all, and
+``frame_check`` the model sweeps the frame check made on a misfit (one per run: of the
+surrogate where the fit searched with it, else of the FE model).
 Prints one row per draw and the counts per departure; ``--out`` writes them (``rows``: one per
 draw, with what its verdict names first; ``summary``: per departure), every draw's
 parameters, notes and verdict line, the seeds and provenance.
@@ -162,7 +164,8 @@ def one(muscle: dict, out: Path) -> dict:
     truth = {**truths({**muscle, "departure": muscle["departure"]}, None),
              "rubber_scale": equivalent_scale(muscle, simulated)}
     judged(row, result, muscle, truth, seconds,
-           verdict_line=result.summary().splitlines()[-1])
+           verdict_line=result.summary().splitlines()[-1],
+           frame_check=result.goodness.frame_check if result.goodness else None)
     return row
 
 
@@ -178,6 +181,8 @@ def summarise(rows: list[dict]) -> list[dict]:
                                    "skipped")},
                       "misfit_line": sum(r["misfit_line"] is not None for r in mine),
                       "instrument_warning": sum(r["instrument_warning"] is not None
+                                                for r in mine),
+                      "frame_check_sweeps": sum((r.get("frame_check") or {}).get("sweeps", 0)
                                                 for r in mine)})
     return table
 
@@ -192,7 +197,18 @@ def table(rows: list[dict]) -> list[dict]:
              "misfit_line": "yes" if r["misfit_line"] else "no",
              "instrument_warning": "yes" if r["instrument_warning"] else "no",
              "verdict_first": first_said(r.get("verdict_line")),
+             "frame_check": frame_check_said(r.get("frame_check")),
              "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
+
+
+def frame_check_said(check: dict | None) -> str:
+    """The sweeps the frame check made and of what (the surrogate the fit searched with,
+    corrected by the FE model, or the model itself), or '-' where it did not run (no misfit)."""
+    if not check:
+        return "-"
+    model = ("surrogate" if check["model"].endswith("corrected by the FE model")
+             else check["model"])
+    return f"{check['sweeps']} ({model})"
 
 
 def first_said(verdict: str | None) -> str:

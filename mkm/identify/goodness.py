@@ -118,6 +118,9 @@ class Goodness:
     #: (:func:`mkm.identify.procedure.frame_hint`: its stiffness, what it lowers chi2 by, the note,
     #: the refit's shift that the intervals hold)
     frame: dict | None = None
+    #: what the frame check cost where it ran (a judged misfit): the model it swept the runs
+    #: with once more, at the shorter held length, and how many sweeps (one per run)
+    frame_check: dict | None = None
 
     @property
     def reduced(self) -> float:
@@ -258,6 +261,7 @@ class Goodness:
                 **({"pulls_late": True} if self.pulls_late else {}),
                 **({"frame": {k: v for k, v in self.frame.items() if k not in ("said", "shift")}}
                    if self.frame else {}),
+                **({"frame_check": self.frame_check} if self.frame_check else {}),
                 "branches": [b.record() for b in self.branches]}
 
 
