@@ -118,8 +118,9 @@ class Goodness:
     #: (:func:`mkm.identify.procedure.frame_hint`: its stiffness, what it lowers chi2 by, the note,
     #: the refit's shift that the intervals hold)
     frame: dict | None = None
-    #: what the frame check cost where it ran (a judged misfit): the model it swept the runs
-    #: with once more, at the shorter held length, and how many sweeps (one per run)
+    #: the frame check where it ran (a judged misfit): the model it swept the runs with once more,
+    #: at the shorter held length, and how many sweeps (one per run); the stiffness it fits and
+    #: how far it and a rest length lower chi2, named or not
     frame_check: dict | None = None
 
     @property

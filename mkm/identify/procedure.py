@@ -722,7 +722,8 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
     ``shift`` of every fitted parameter with the frame, the model-form term ``frame`` of the
     intervals) where the frame takes :data:`FRAME_TAKES` of the chi-square's excess away and
     more than the rest length does; else None. What the check cost (its model and sweeps) is
-    ``fitness.frame_check``."""
+    ``fitness.frame_check``, with the stiffness it fits and how far it and a rest length lower
+    chi2, named or not."""
     if not fitness.misfit or not fitness.judged:
         return None
     tables = source.tables(runs, best.values)
@@ -757,13 +758,19 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
             optimize.minimize_scalar(lambda e: refit_chi2(length, e), bounds=(-0.1, 0.1),
                                      method="bounded", options={"xatol": 1e-6}).fun)
     lowered, rest_lowered = base - with_frame, base - rest
-    if not (at_top > 0 and base > fitness.nu and lowered >= FRAME_TAKES * (base - fitness.nu)
-            and lowered > rest_lowered):
-        return None
     # the shift is eps at the largest force: of the run that pulls it
     L0_mm = max((float(np.max(F)), float(run.muscle["L0_mm"]))
                 for (_, F), run in zip(tables, runs, strict=True))[1]
     compliance = at_top * L0_mm / top_N
+    # the check's own numbers, named or not: why a frame was not named is in the record
+    fitness.frame_check.update(
+        fitted_stiffness_N_per_mm=float(f"{1.0 / compliance:.3g}") if at_top > 0 else None,
+        chi2_linearised=round(float(base), 3), chi2_lowered=round(float(lowered), 3),
+        **({} if "L0_mm" in best.names else
+           {"rest_length_chi2_lowered": round(float(rest_lowered), 3)}))
+    if not (at_top > 0 and base > fitness.nu and lowered >= FRAME_TAKES * (base - fitness.nu)
+            and lowered > rest_lowered):
+        return None
     stiffness = 1.0 / compliance
     within = with_frame <= fitness.nu
     rest_said = ("" if "L0_mm" in best.names else

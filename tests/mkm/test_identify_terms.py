@@ -499,6 +499,11 @@ def test_a_frame_yielding_under_the_pull_is_named_with_its_stiffness(tmp_path):
     assert frame["chi2_lowered"] > 2 * frame["rest_length_chi2_lowered"]
     assert result.goodness.record()["frame"] == {k: v for k, v in frame.items()
                                                  if k not in ("said", "shift")}
+    # what the check cost and found: one more sweep per run
+    check = result.goodness.record()["frame_check"]
+    assert check["model"] == "thickwall" and check["sweeps"] == len(runs) == 3
+    assert check["fitted_stiffness_N_per_mm"] == frame["stiffness_N_per_mm"]
+    assert check["chi2_lowered"] == frame["chi2_lowered"]
     term = result.model_form["frame"]
     assert term == {"kind": "one-sided", "shift": frame["shift"], "what": (
         f"a frame of {frame['stiffness_N_per_mm']:.3g} N/mm fitted (linearised)")}
@@ -543,6 +548,9 @@ def test_a_rest_length_declared_wrong_is_not_taken_for_a_frame(tmp_path):
     result = identify(runs, model="thickwall", search="model")
     assert result.goodness.misfit and result.goodness.frame is None
     assert not [n for n in result.notes if n.startswith("frame: ")]
+    # the check ran, and says why it named no frame: the rest length lowers chi2 further
+    check = result.goodness.frame_check
+    assert check["sweeps"] == 3 and check["rest_length_chi2_lowered"] > check["chi2_lowered"]
     assert "a frame yielding" not in result._verdict_line()
     assert "first, a run declared at its rest length pulls later" in result._verdict_line()
 
