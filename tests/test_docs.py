@@ -2725,6 +2725,30 @@ def test_the_guides_frame_that_yields_is_its_measured_file():
     assert all(d["instrument_warning"].startswith("creep or load cell: ") for d in told)
     assert (f"{len(told)} also print the creep-or-load-cell note (the other braid not taking "
             "the creep's place on any)") in said
+    # the give at the planned top force of the eps 0 run, named and not
+    def give(d):
+        return d["plan"]["eps0_force_N_at_top"] / d["muscle"]["truth"]["frame_stiffness_N_per_mm"]
+
+    gives = [give(d) for d, _ in named]
+    shares = [100 * give(d) / d["muscle"]["L0_mm"] for d, _ in named]
+    (stiffest,) = [d for d, n in zip(draws, notes, strict=True) if not n]
+    check = stiffest["frame_check"]
+    assert (f"the named frames give {min(gives):.2f}-{max(gives):.2f} mm, {min(shares):.2f}-"
+            f"{max(shares):.2f} % of their muscle's length; the stiffest gives "
+            f"{give(stiffest):.2f} mm, {100 * give(stiffest) / stiffest['muscle']['L0_mm']:.2f} % "
+            f"of its {stiffest['muscle']['L0_mm']:g} mm") in said
+    assert check["rest_length_chi2_lowered"] > check["chi2_lowered"]
+    assert (f"the frame fitted at {check['fitted_stiffness_N_per_mm']:.3g} N/mm lowers chi2 by "
+            f"{check['chi2_lowered']:.3g} of {check['chi2_linearised']:.3g}), but a rest length "
+            f"declared wrong lowers it by {check['rest_length_chi2_lowered']:.3g}, more") in said
+    assert (f"a frame is named where it gives {min(shares):.2f} % of the muscle's length or more "
+            "at its largest force") in said
+    sweeps = [d["frame_check"]["sweeps"] for d in draws]
+    assert all(d["frame_check"]["model"].endswith("corrected by the FE model") for d in draws)
+    assert sum(sweeps) == record["summary"][0]["frame_check_sweeps"]
+    assert all(d["frame_check"]["sweeps"] == len(d["plan"]["eps"]) for d in draws)
+    assert (f"one sweep per run of the model the fit searched with: {sum(sweeps)} sweeps over the "
+            f"{len(draws)} draws (the table's `frame_check`), all of the surrogate") in said
 
 def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
     """calibration.md's words on identify's defaults on a bench wrong several ways at once:
