@@ -2824,20 +2824,30 @@ def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
     bonded, other = zip(*map(rises, braid), strict=True)
     (within,) = [d for d in braid if ", but first, these runs cannot tell a sliding braid" in
                  d["verdict_line"]]
-    assert all(d["departure"] == "sliding braid" for d in braid)
-    assert (f"On {len(braid)} of the sliding sleeves it names the braid first: dropping the "
-            f"creep raises chi2 by {min(bonded):.3g}-{max(bonded):.3g} with the bonded braid "
-            f"and by {min(other):.3g} to {max(other):.3g} with the sliding one") in said
+    assert braid == [d for d in told if d["departure"] == "sliding braid"]
+    assert (f"On all {len(braid)} sliding sleeves it names the braid first: dropping the creep "
+            f"raises chi2 by {min(bonded):.3g}-{max(bonded):.3g} with the bonded braid and by "
+            f"{min(other):.3g} to {max(other):.3g} with the sliding one") in said
     assert f"seed {within['seed']}, within the noise, is told first" in said
-    (cell,) = [d for d in told if d["departure"] == "sliding braid" and d not in braid]
-    share = 1 - rises(cell)[1] / rises(cell)[0]
-    assert (f"The sixth, seed {cell['seed']}, is told the load cell's: the sliding braid takes "
-            f"{100 * share:.0f} % of its creep's place ({rises(cell)[0]:.3g} and "
-            f"{rises(cell)[1]:.3g})") in said
-    gain = next(d for d in told if d["seed"] == 20261619)
-    assert (f"as it does on seed 20261619's cell "
-            f"{100 * (1 - gain['muscle']['truth']['loadcell_gain']):.1f} % low") in said
-    assert 1 - rises(gain)[1] / rises(gain)[0] == pytest.approx(share, abs=0.005)
+    gain, cell = (next(d for d in told if d["seed"] == seed) for seed in (20261619, 20261601))
+    share = 1 - rises(gain)[1] / rises(gain)[0]
+    assert share < 0.9 and rises(cell)[1] > rises(cell)[0]
+    assert {d["seed"] for d in told if d["departure"] == "gains"} == {20261619, 20261601}
+    assert (f"Both gains' draws are told the load cell's: the sliding braid takes "
+            f"{100 * share:.0f} % of seed 20261619's creep's place ({rises(gain)[0]:.3g} and "
+            f"{rises(gain)[1]:.3g}; its cell "
+            f"{100 * (1 - gain['muscle']['truth']['loadcell_gain']):.1f} % low), short of the "
+            "90 % asked, and none of seed 20261601's") in said
+    checked = [d for d in draws if d.get("frame_check")]
+    (fe,) = [d for d in checked
+             if not d["frame_check"]["model"].endswith("corrected by the FE model")]
+    sweeps = sum(d["frame_check"]["sweeps"] for d in checked)
+    assert sweeps == sum(s["frame_check_sweeps"] for s in record["summary"])
+    assert not any(n.startswith("frame: ") for d in draws for n in d["notes"])
+    assert (f"The frame check ran on every judged misfit, at one sweep per run: {sweeps} sweeps "
+            f"over {len(checked)} draws, of the surrogate but for seed {fe['seed']}'s "
+            f"{fe['frame_check']['sweeps']} (of the FE model, which searched there), naming no "
+            "frame") in said
     (left_out,) = [d for d in draws if any(n.startswith("creep not identifiable from these "
                                                       "runs: ") for n in d["notes"])]
     note = next(n for n in left_out["notes"] if n.startswith("creep not identifiable"))
