@@ -91,6 +91,9 @@ class RunData:
     #: the tube's declared +- tolerances [mm] (``D0_mm``, ``t0_mm``: run.json's
     #: ``calibration.muscle_tolerances``, :class:`mkm.fem.tolerances.Tolerances` where none)
     geometry_tolerance_mm: dict = field(default_factory=lambda: _tube_tolerances(None))
+    #: an imported ramp's pressure rate [bar/s] over each step's bin (its samples' slope, as
+    #: the monitor read them); None for a run of held steps
+    ramp_rate_bar_per_s: np.ndarray | None = None
     #: what identify notes of the run's record ("" when nothing): a run whose steps were all
     #: done and whose end-of-run vent alone was not verified (:func:`unverified_vent`)
     note: str = ""
@@ -146,6 +149,13 @@ class RunData:
         rising = (self.steps["direction"] == "up").to_numpy()
         sign = np.where(rising, 1.0, -1.0)[np.maximum(self.hold, 0)]
         return np.where(self.hold >= 0, sign, 0.0)
+
+    def ramp_rate_at_samples(self) -> np.ndarray | float:
+        """Per sample: its ramp bin's pressure rate [bar/s] (0 outside the bins), or 0 for a
+        run of held steps."""
+        if self.ramp_rate_bar_per_s is None:
+            return 0.0
+        return np.where(self.hold >= 0, self.ramp_rate_bar_per_s[np.maximum(self.hold, 0)], 0.0)
 
     def step_means(self, force_N: np.ndarray) -> np.ndarray:
         """The mean of a force trace over each settled step's hold [N]."""
@@ -247,11 +257,15 @@ def load_run_data(path) -> RunData:
     settled = settled.reset_index(drop=True).assign(
         hold_start_s=lambda s: s["start_s"] + s["settle_s"])
     pressure_se = np.full(len(settled), np.nan)
+    is_ramp = imported.get("shape") == "ramp"
+    rate = np.zeros(len(settled))
     for k, step in settled.iterrows():
         inside = (time_s >= step["hold_start_s"] - 1e-9) & (time_s <= step["end_s"] + 1e-9)
         hold[inside] = k
         if inside.sum() > 1:  # the monitor's noise in the hold mean (goodness of fit uses it)
             pressure_se[k] = np.std(pressure[inside], ddof=1) / np.sqrt(inside.sum())
+            if is_ramp and np.ptp(time_s[inside]) > 0:
+                rate[k] = np.polyfit(time_s[inside], pressure[inside], 1)[0]
         pressure[inside] = step["pressure_bar_mean"]
     settled["pressure_se_bar"] = pressure_se
     # the ramp into a hold does not overshoot it (first-order regulator): clip its noise too
@@ -270,7 +284,7 @@ def load_run_data(path) -> RunData:
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
-                   timed=imported.get("shape") != "ramp",
+                   timed=not is_ramp, ramp_rate_bar_per_s=rate if is_ramp else None,
                    vented_bar=_vented(run), note=note, **_instrument(run))
 
 
