@@ -831,8 +831,9 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
             "fastest_ramp_bar_per_s": float(f"{rate:.3g}"),
             "chi2_lowered": round(float(lowered), 3),
             "chi2_per_nu": round(float(with_lag / fitness.nu), 3),
-            "said": (f"lag: the force trails the pressure by about {tau_s:.2g} s ({tau_s * rate:.2g}"
-                     f" bar on the fastest ramp, {rate:.2g} bar/s): a lag between the monitor and "
+            "said": (f"lag: the force trails the pressure by about {tau_s:.2g} s "
+                     f"({tau_s * rate:.2g} bar on the fastest ramp, {rate:.2g} bar/s): a lag "
+                     "between the monitor and "
                      "the muscle (tubing, a monitor at the regulator), whose loop between the "
                      "branches is not friction: fitting it (linearised) lowers chi2 by "
                      f"{lowered:.3g} (chi2/nu {with_lag / fitness.nu:.3g}){friction}; "
