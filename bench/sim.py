@@ -47,7 +47,8 @@ reading and every later command, a longer one overflows it and loses the samples
 failure, a load-cell input reading NaN or holding one value (``loadcell_stuck_at_s``: its cable
 or amplifier failed), a regulator that stops following, an overshoot, a monitor input that reads
 0 V (``monitor_lost_at_s``: regulator unpowered, wire off).
-:func:`describe_physics` says what the simulated muscle is (recorded in run.json).
+:func:`describe_physics` says what the simulated muscle is (recorded in run.json);
+:func:`logged_ramp` is a lab's logger record of a continuous ramp on it (for ``mkm import``).
 """
 
 from __future__ import annotations
@@ -536,3 +537,25 @@ class SimBackend:
     def hang_mass(self, mass_kg: float) -> None:
         """Hang ``mass_kg`` on the load cell (for ``mkm calibrate-loadcell``)."""
         self.bench.external_force_N = mass_kg * STANDARD_GRAVITY
+
+
+def logged_ramp(config, top_bar: float, rate_bar_per_s: float, rest_s: float = 5.0):
+    """What a lab's logger records of the simulated bench under a continuous ramp: vented
+    ``rest_s``, the command ramped at ``rate_bar_per_s`` up to ``top_bar`` and back to 0,
+    vented ``rest_s`` again, one row per sample (``config.daq.sample_rate_hz``) of the time,
+    the monitor's pressure and the load cell's force as read (its offset in it: ``mkm
+    import`` tares it on the rest), a table for :func:`mkm.bench.exchange.import_table`."""
+    import pandas as pd
+
+    bench, r = SimMuscleBench(config), config.regulator
+    rise_s = top_bar / rate_bar_per_s
+    n = int(round((2 * rest_s + 2 * rise_s) / bench.dt))
+    time_s = np.arange(n) * bench.dt
+    commanded = np.interp(time_s, [0.0, rest_s, rest_s + rise_s, rest_s + 2 * rise_s],
+                          [0.0, 0.0, top_bar, 0.0])
+    volts = np.empty((n, 2))
+    for k in range(n):
+        bench.set_command_volts(r.command_volts(commanded[k]))
+        volts[k] = bench.step()
+    return pd.DataFrame({"t (s)": time_s, "P (bar)": r.monitor_bar(volts[:, 1]),
+                         "F (N)": volts[:, 0] * config.loadcell.sensitivity_N_per_V})
