@@ -817,20 +817,21 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
     if not (tau_s > 0 and lowered >= LAG_CHI2):
         return None
     rate = max(float(np.max(np.abs(run.ramp_rate_bar_per_s))) for run in ramps)
-    friction = ""
+    friction, record = "", {}
     if "hysteresis_fraction" in best.names:
         step = _step(best, best.residual_N + tau_s / LAG_STEP_S * column)
         fitted = best.values["hysteresis_fraction"]
         with_it = max(fitted + float(step[best.names.index("hysteresis_fraction")]), 0.0)
         friction = (f"; the fitted friction, {fitted:.3g}, is {with_it:.3g} with the lag: "
                     "the rest of its loop is the lag's, not the braid's")
+        record["hysteresis_fraction_with_lag"] = float(f"{with_it:.3g}")
     advice = ("ramp slower, read the pressure at the muscle, or hold the steps, and identify "
               "again")
     return {"what": "lag between monitor and muscle",
             "tau_s": float(f"{tau_s:.3g}"), "trail_bar": float(f"{tau_s * rate:.3g}"),
             "fastest_ramp_bar_per_s": float(f"{rate:.3g}"),
             "chi2_lowered": round(float(lowered), 3),
-            "chi2_per_nu": round(float(with_lag / fitness.nu), 3),
+            "chi2_per_nu": round(float(with_lag / fitness.nu), 3), **record,
             "said": (f"lag: the force trails the pressure by about {tau_s:.2g} s "
                      f"({tau_s * rate:.2g} bar on the fastest ramp, {rate:.2g} bar/s): a lag "
                      "between the monitor and "
