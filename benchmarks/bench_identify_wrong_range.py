@@ -34,8 +34,8 @@ errors at once:
   line_tau_s``, a first-order lag of 0.2-2 s); the runs are the staircase of the others, or,
   on ramps, one continuous ramp per eps up to the plan's top pressure and back, reaching it
   in 60-120 s (:func:`mkm.bench.sim.logged_ramp`, as a lab's logger records it), imported
-  with the instruments' declared accuracy (the load cell's 0.05 % of its capacity, the
-  monitor's 1 % of its full scale) so that the fit is judged.
+  with the instruments' declared accuracy (the load cell's 0.05 % of its capacity, a 0.25 %
+  class transducer's 0.25 % of the monitor's full scale) so that the fit is judged.
 
 The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
 the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
@@ -132,7 +132,7 @@ def ramp_run(muscle: dict, config, out: Path) -> Path:
     out.mkdir(parents=True, exist_ok=True)
     logged_ramp(config, top_bar, top_bar / muscle["ramp_to_top_s"]).to_csv(table, index=False)
     accuracy = (f"force={0.0005 * config.loadcell.capacity_N:g}N,"
-                f"pressure={config.regulator.monitor_accuracy_bar:g}bar")
+                f"pressure={0.0025 * config.regulator.full_scale_bar:g}bar")
     (imported,) = import_table(table, out, config.muscle.record(),
                                accuracy=parse_accuracy(accuracy))
     return imported.path
