@@ -43,17 +43,21 @@ BUILT_ANGLE_TOLERANCE_DEG = 1.0
 
 
 def steeper_braid_N(row, requirements, calibration: Calibration | None,
-                    gap_mm: float = 0.0) -> list[float]:
+                    gap_mm: float = 0.0, cache_dir=None) -> list[float]:
     """Per requirement, the FE force [N] of design ``row`` with its braid
     :data:`BUILT_ANGLE_TOLERANCE_DEG` steeper (the force falls as the angle grows), on the
-    mesh of its row; 0 where the braid locks there or the FE gives no force."""
+    mesh of its row; 0 where the braid locks there or the FE gives no force. Each solve is
+    kept in the prediction cache ``cache_dir`` as the verification's sweeps are (None: no
+    cache)."""
+    from mkm.prediction_cache import cached_predict
+
     model = fe_model(row["fe_mesh"], row["L0_mm"],
                      float(row["theta0_deg"]) + BUILT_ANGLE_TOLERANCE_DEG, row["rubber"],
                      calibration, gap_mm)
     out = []
     for r in requirements:
-        prediction = model.predict(r.pressure_bar, float(row["D0_mm"]), float(row["t0_mm"]),
-                                   r.eps)
+        prediction, _ = cached_predict(model, r.pressure_bar, float(row["D0_mm"]),
+                                       float(row["t0_mm"]), r.eps, cache_dir=cache_dir)
         force = float(np.ravel(prediction.force_N)[0])
         out.append(force if bool(np.ravel(prediction.valid)[0]) and np.isfinite(force)
                    else 0.0)

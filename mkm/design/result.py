@@ -304,7 +304,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     # how sure a nominal margin is where no identification says: the braid angle built
     steeper = ([] if tolerances is not None or ok.empty or any(b is not None for b in band)
                else steeper_braid_N(ok.iloc[0], found.requirements, calibration,
-                                    found.gap_mm))
+                                    found.gap_mm, cache_dir))
     n = len(found.requirements)
     columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",

@@ -542,6 +542,50 @@ def test_a_margin_a_braid_one_degree_steeper_takes_away_is_said():
     assert design_record(result)["steeper_braid_N"] == [steeper]
 
 
+def _counting_fe_solves(monkeypatch) -> list:
+    """The muscles the FE model solves in this process from now on, one item a sweep."""
+    solves = []
+    forces = Axisym._forces
+
+    def counted(self, P, D0, t0, eps):
+        solves.append((float(np.ravel(D0)[0]), float(np.ravel(t0)[0]), self.theta0_deg))
+        return forces(self, P, D0, t0, eps)
+
+    monkeypatch.setattr(Axisym, "_forces", counted)
+    return solves
+
+
+def test_the_steeper_braid_solve_is_kept_in_the_prediction_cache(tmp_path, monkeypatch):
+    # a repeated design took its verification's sweeps and its worst corners from the cache,
+    # and solved the chosen design's braid 1 deg steeper again: it is kept where they are
+    from mkm.design.fe_verification import steeper_braid_N
+
+    row = {"D0_mm": 40.0, "t0_mm": 3.0, "L0_mm": 250.0, "theta0_deg": 32.0,
+           "rubber": "calibrated", "fe_mesh": MESH}
+    reqs = [parse_requirement("300N@2bar,eps=0.1"), parse_requirement("100N@2bar,eps=0.2")]
+    expected = [fe_force(40.0, 3.0, 2.0, eps, 33.0, 250.0) for eps in (0.1, 0.2)]
+    solves = _counting_fe_solves(monkeypatch)
+    first = steeper_braid_N(row, reqs, None, cache_dir=tmp_path)
+    assert solves == [(40.0, 3.0, 33.0)] * 2  # one point a requirement, at 33 deg
+    assert first == pytest.approx(expected, rel=1e-12)
+    assert steeper_braid_N(row, reqs, None, cache_dir=tmp_path) == first
+    assert len(solves) == 2
+    steeper_braid_N(row, reqs, None)  # no cache: solved again
+    assert len(solves) == 4
+
+
+def test_a_repeated_design_solves_nothing_with_its_cache(tmp_path, monkeypatch):
+    """The second run of the same design, with the same cache, takes every FE force of its
+    verification and of its notes from the cache (the steeper braid's was solved again)."""
+    kwargs = {"top": 1, "mesh": MESH, "cache_dir": tmp_path, "workers": 1}
+    first = run_design(["330N@2.5bar,eps=0.15"], **kwargs)
+    assert len(first.steeper_braid_N) == 1
+    solves = _counting_fe_solves(monkeypatch)
+    again = run_design(["330N@2.5bar,eps=0.15"], **kwargs)
+    assert solves == []
+    assert again.steeper_braid_N == first.steeper_braid_N
+
+
 def test_the_fe_search_refines_a_braid_angle_range_too():
     """Where the FE model searches (3 bar, past the surrogate's 2.5), a range of theta0 was
     tried at its five values alone (28, 30.5, 33, 35.5, 38 deg): 500 N at 3 bar, eps 0.1 in
