@@ -763,7 +763,10 @@ class _Group:
         return self.recognition.values(role, optional)[self.rows]
 
     def cell(self, k: int, role: str) -> str:
-        return self.table.cell(int(self.rows[k]), self.columns[role].index)
+        return self.table.ref(int(self.rows[k]), self.columns[role].index)
+
+    def where(self, k: int, role: str) -> str:
+        return self.table.where(int(self.rows[k]), self.columns[role].index)
 
     @property
     def named(self) -> str:
@@ -828,7 +831,7 @@ def _single(group: _Group, role: str) -> float:
     if role in ("length", "L0"):
         bad = np.flatnonzero(~(np.isfinite(values) & (values > 0)))
         if bad.size:
-            raise ValueError(f"{group.table.name}, cell {group.cell(int(bad[0]), role)} (column "
+            raise ValueError(f"{group.where(int(bad[0]), role)} (column "
                              f"{group.columns[role].header!r}): {values[bad[0]]:g} mm is not a "
                              "length: expected a finite length > 0 mm")
     return float(values[0])
@@ -1025,7 +1028,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), force_sign * group.values("force")
     for k in np.flatnonzero(np.abs(force) > MAX_CAPACITY_N)[:1]:  # no load cell reads it
-        raise ValueError(f"{table.name}, cell {group.cell(int(k), 'force')} (column "
+        raise ValueError(f"{group.where(int(k), 'force')} (column "
                          f"{found['force'].header!r}): {force_sign * force[k]:g} N is beyond "
                          f"the largest load cell a bench takes ({MAX_CAPACITY_N:g} N): "
                          "expected a force reading (a logger's overload value, or a unit "
@@ -1043,7 +1046,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         back = np.flatnonzero(np.diff(time_s) < 0)
         if back.size:
             raise ValueError(backwards_message(
-                f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')}",
+                f"{group.where(int(back[0]) + 1, 'time')}",
                 found["time"].header, time_s[back[0]] - time_s[back[0] + 1],
                 newest_first=back.size == time_s.size - 1))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
@@ -1140,17 +1143,17 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     for k in np.flatnonzero(outside("pressure_bar", pressure))[:1]:
         p = pressure[k]
         if p < 0 and below:
-            raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
+            raise ValueError(f"{group.where(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0 by more "
                              f"than {below[1](below[0][k])}: expected a gauge pressure >= "
                              f"{-below[0][k]:.3g} bar; if the sensor's accuracy is wider, "
                              f"declare it: --accuracy pressure={-p:g}bar")
         if p < 0:
-            raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
+            raise ValueError(f"{group.where(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
                              "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
         try:
-            check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
+            check_value("pressure_bar", p, f"{group.where(k, 'pressure')}: ")
         except ValueError as exc:  # beyond any gauge: a unit read as bar, as the note says
             raise ValueError(f"{exc}; {_other_pressure_units(top_bar, found['pressure'].unit)}"
                              ) from None

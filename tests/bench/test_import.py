@@ -2970,3 +2970,63 @@ def test_files_that_are_not_one_run_are_refused(case, message, tmp_path, mkm_cli
     assert code == 2 and out == "" and err.count("\n") == 1, err
     assert message in err
     assert not (tmp_path / "runs").exists()
+
+
+@pytest.mark.parametrize("column, value, message", [
+    ("Pressure [kPa]", -150.0, "step4.csv, cell D9 (column 'Pressure [kPa]'): -1.5 bar is "
+     "below 0"),
+    ("Force [N]", 2e6, "step4.csv, cell B9 (column 'Force [N]'): 2e+06 N is beyond the largest "
+     "load cell a bench takes"),
+])
+def test_a_bad_cell_of_several_files_is_named_in_its_own_file(column, value, message,
+                                                              tmp_path, mkm_cli):
+    # found after the files are joined, the cell was named in the first file's name
+    # ("step0.csv and 10 more, cell D9"): its own file and line, the sixth row under the two
+    # comment lines and the header
+    files, _, _ = _files_per_step(tmp_path / "LM8")
+    frame = pd.read_csv(files[4], comment="#")
+    frame.loc[5, column] = value
+    files[4].write_text("# a\n# b\n" + frame.to_csv(index=False))
+    code, out, err = mkm_cli(["import", str(tmp_path / "LM8" / "step*.csv"), *MUSCLE, "--eps",
+                              "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"mkm import: error: {message}" in err
+
+
+@pytest.mark.parametrize("first, later, message", [
+    ("# held length L = 135 mm", "# held length L = 120 mm",
+     "step6.csv: its header declares 'L = 120 mm' (line 1), step0.csv's 'L = 135 mm' (line 1): "
+     "two muscle states, which one run cannot hold: expected the files of one muscle at one "
+     "length; import each state's files as a run of its own, with its --eps"),
+    ("# eps: 10 %", "# eps: 20 %",
+     "step6.csv: its header declares 'eps: 20 %' (line 1), step0.csv's 'eps: 10 %' (line 1)"),
+    ("# muscle: LM-8", "# muscle: LM-9",
+     "step6.csv: its header declares 'muscle: LM-9' (line 1), step0.csv's 'muscle: LM-8' "
+     "(line 1): two muscle states, which one run cannot hold: expected the files of one muscle "
+     "at one length; import each muscle's files as a run of its own, with its --id"),
+])
+def test_files_whose_headers_declare_two_states_are_refused(first, later, message, tmp_path,
+                                                             mkm_cli):
+    # two held lengths (or muscles) said only in a comment line, no column telling them
+    # apart: the files were joined into one run as if of one length
+    files, _, _ = _files_per_step(tmp_path / "LM8")
+    for k, path in enumerate(files):
+        # in place of the first comment line, which names the muscle
+        lines = path.read_text().splitlines(keepends=True)
+        path.write_text((first if k < 6 else later) + "\n" + "".join(lines[1:]))
+    code, out, err = mkm_cli(["import", str(tmp_path / "LM8" / "step*.csv"), *MUSCLE, "--eps",
+                              "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"mkm import: error: {message}" in err
+    assert not (tmp_path / "runs").exists()
+
+
+def test_files_whose_headers_declare_one_state_are_joined(tmp_path, mkm_cli):
+    # the same length in every header, and a set pressure that differs from file to file (a
+    # file per step says its own): one run
+    files, _, _ = _files_per_step(tmp_path / "LM8")
+    for path in files:
+        lines = path.read_text().splitlines(keepends=True)
+        path.write_text(lines[0] + "# L0 = 282 mm, L = 282.0 mm\n" + "".join(lines[1:]))
+    (run,), err = _import(mkm_cli, tmp_path / "LM8" / "step*.csv", *MUSCLE, "--eps", "0")
+    assert len(run.meta.imported_from["files"]) == len(files)
