@@ -1275,10 +1275,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if shape == "staircase":
             from mkm.bench.config import load_config
 
-            steps, step_of = series.staircase_steps(time_s, pressure, force, load_config(),
+            settle_config = load_config()
+            steps, step_of = series.staircase_steps(time_s, pressure, force, settle_config,
                                                     held)
             handling["steps_from"] = ("plateaus judged by the bench's settle test "
                                       "(packaged [settle] criteria), averaged by HoldStats")
+            if unsettled := series.unsettled_note(pressure, held, steps, settle_config):
+                notes.append(unsettled)
         else:
             steps, step_of, width = series.ramp_steps(time_s, pressure, force)
             handling["steps_from"] = (f"quasi-static bins of {width:.3g} bar, rising and "

@@ -3030,3 +3030,51 @@ def test_files_whose_headers_declare_one_state_are_joined(tmp_path, mkm_cli):
         path.write_text(lines[0] + "# L0 = 282 mm, L = 282.0 mm\n" + "".join(lines[1:]))
     (run,), err = _import(mkm_cli, tmp_path / "LM8" / "step*.csv", *MUSCLE, "--eps", "0")
     assert len(run.meta.imported_from["files"]) == len(files)
+
+
+def _pre_conditioned(top_hold_s: float, step_holds_s: list[float], seed: int = 5):
+    """A 10 Hz record at eps 0 as a bench pre-conditions its muscle: 5 s vented, a cycle to
+    2.5 bar held ``top_hold_s`` and vented for 3 s, then a staircase 0.5-2.5-0.5 bar, each
+    level reached in 1 s and held as ``step_holds_s`` says; friction 3 %, creep 5 % (tau
+    5 s), noise 0.003 bar and 0.2 N."""
+    rng = np.random.default_rng(seed)
+    knots_t, knots_p = [0.0, 5.0, 6.0, 6.0 + top_hold_s, 7.0 + top_hold_s, 10.0 + top_hold_s], \
+        [0.0, 0.0, 2.5, 2.5, 0.0, 0.0]
+    for level, hold_s in zip([0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.5, 1.0, 0.5, 0.0], step_holds_s,
+                             strict=True):
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 1.0 + hold_s]
+        knots_p += [level, level]
+    t = np.arange(0.0, knots_t[-1], 0.1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.05, 5.0)
+    return pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
+                         "F": truth + rng.normal(0, 0.2, t.size)})
+
+
+@pytest.mark.parametrize("case", ["pre-conditioning", "short step"])
+def test_a_step_that_did_not_settle_is_said_with_what_to_do(case, tmp_path, mkm_cli):
+    # a pre-conditioning cycle's 2.2 s top hold became an unsettled step that identify left out
+    # without a word; so would a step of the measurement held too short to settle
+    holds = [12.0] * 10
+    if case == "short step":
+        holds[2] = 2.2  # 1.5 bar, rising
+    path = tmp_path / "pc.csv"
+    _pre_conditioned(2.2 if case == "pre-conditioning" else 12.0, holds).to_csv(path,
+                                                                                 index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    unsettled = run.steps[~run.steps["settled"].astype(bool)]
+    said = ("step(s) did not settle (the bench's settle test), kept in steps.csv with settled "
+            "= false and left out by mkm identify, which fits settled holds alone: ")
+    top = ("step 0 at 2.5 bar, held {} s before the record vents and its staircase starts: a "
+           "pre-conditioning cycle's top, not a step of the measurement: nothing to do")
+    if case == "pre-conditioning":
+        assert unsettled["step"].tolist() == [0]
+        assert "1 " + said + top.format("2.2") in err
+    else:
+        # the 12 s top still creeps (5 % of 1 kN, tau 5 s: 0.9 N/s at its end) and settles no
+        # more; the staircase's third level is step 3
+        assert unsettled["step"].tolist() == [0, 3]
+        assert "2 " + said + top.format("12") + (
+            "; step 3 at 1.5 bar, held 2.2 s: its force did not settle within the hold; to fit "
+            "it, hold each step longer than the bench's settle.min_dwell_s (4 s) and until the "
+            "force is steady") in err
