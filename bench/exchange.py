@@ -25,6 +25,7 @@
 from __future__ import annotations
 
 import datetime
+import itertools
 import json
 import math
 import re
@@ -549,6 +550,8 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
             imported.update(file=tables[0].source.name, files=joined.files,
                             clock=joined.clock, between_files_s=between_files_s)
             built[-1][3].insert(0, joined.note)
+            if apart := _files_apart(built[-1][1], joined.files):
+                built[-1][3].append(apart)
         bar.done()
     shared = [k for k, g in enumerate(groups) if not {"eps", "length"} & set(g.columns)]
     if len(prepared) > 1 and len(shared) > 1 and muscle.get("eps") is not None:
@@ -585,6 +588,43 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
         bar.done()
     bar.end()
     return out
+
+
+#: two steps of one branch at one pressure, in two of a record's files, whose forces lie this
+#: share of the larger apart are said: a muscle's cycles repeat far closer, another length or
+#: another muscle does not
+FILES_APART_SHARE = 0.25
+
+
+def _files_apart(steps: list[StepRecord], files: list[dict]) -> str:
+    """The note on the steps of several files (:func:`mkm.bench.tables.join_files`) whose
+    forces at one pressure, on one branch, lie :data:`FILES_APART_SHARE` apart or more in two
+    files (the larger pair said): files of two muscle states no column tells apart, or ``""``.
+    A step's file is the one whose span on the run's clock holds its start."""
+    starts = np.array([f["placed_at_s"] for f in files])
+
+    def file_of(step: StepRecord) -> str:
+        return files[max(int(np.searchsorted(starts, step.start_s, side="right")) - 1, 0)]["file"]
+
+    worst = None
+    for a, b in itertools.combinations(steps, 2):
+        larger = max(abs(a.force_N_mean), abs(b.force_N_mean))
+        if (a.direction != b.direction or larger <= 0
+                or abs(a.pressure_bar_mean - b.pressure_bar_mean) > series.PLATEAU_TOLERANCE_BAR
+                or file_of(a) == file_of(b)):
+            continue
+        share = abs(a.force_N_mean - b.force_N_mean) / larger
+        if share >= FILES_APART_SHARE and (worst is None or share > worst[0]):
+            worst = (share, a, b)
+    if worst is None:
+        return ""
+    share, a, b = worst
+    branch = "rising" if a.direction == "up" else "falling"
+    return (f"{branch} at {a.pressure_bar_mean:.3g} bar, {file_of(a)} reads "
+            f"{a.force_N_mean:.4g} N and {file_of(b)} {b.force_N_mean:.4g} N, "
+            f"{100 * share:.0f} % apart, where a muscle's cycles repeat far closer: if the files "
+            "hold two lengths or two muscles, import each one's files as a run of its own, with "
+            "its --eps (or --id)")
 
 
 def _lacks(table, missing: list[str]) -> str:

@@ -3147,3 +3147,25 @@ def test_a_ramp_without_a_declared_accuracy_is_not_judged_and_says_why(tmp_path,
     chi2_per_nu = np.mean(residual**2 / (force_se**2 + (slope * pressure_se) ** 2))
     # 40 bins judged so: chi2/nu 7.6, where chance puts it beyond 3 once in 10^9
     assert chi2_per_nu > 3
+
+
+@pytest.mark.parametrize("factor", [0.7, 1.0])
+def test_files_of_two_states_without_a_word_of_it_are_said(factor, tmp_path, mkm_cli):
+    # a second staircase's files at 0.7 of the first's forces (another held length), nothing
+    # in their columns or comments to say so: joined as one run with no word of it. The same
+    # muscle's second cycle (1.0) says nothing
+    files, _, _ = _files_per_step(tmp_path / "LM8")
+    for k, path in enumerate(files):
+        frame = pd.read_csv(path, comment="#")
+        frame["Force [N]"] = np.round(frame["Force [N]"] * factor, 3)
+        frame.to_csv(path.with_name(f"step{k + len(files)}.csv"), index=False)
+    (run,), err = _import(mkm_cli, tmp_path / "LM8" / "step*.csv", *MUSCLE, "--eps", "0")
+    assert len(run.meta.imported_from["files"]) == 2 * len(files)
+    said = "apart, where a muscle's cycles repeat far closer"
+    if factor == 1.0:
+        assert said not in err
+        return
+    # each pair 30 % apart to the forces' rounding: the one named is the furthest
+    assert ("rising at 2.5 bar, step5.csv reads 967.6 N and step16.csv 677.4 N, 30 % " + said
+            + ": if the files hold two lengths or two muscles, import each one's files as a run "
+            "of its own, with its --eps (or --id)") in err
