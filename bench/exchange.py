@@ -592,16 +592,21 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
 
 #: two steps of one branch at one pressure, in two of a record's files, whose forces lie this
 #: share of the larger apart are said: a muscle's cycles repeat far closer, another length or
-#: another muscle does not
+#: another muscle does not ...
 FILES_APART_SHARE = 0.25
+#: ... where the larger pulls this share of the record's largest step force at least (a slack
+#: muscle's steps read the load cell's noise, any share of it apart)
+FILES_APART_FLOOR = 0.1
 
 
 def _files_apart(steps: list[StepRecord], files: list[dict]) -> str:
     """The note on the steps of several files (:func:`mkm.bench.tables.join_files`) whose
     forces at one pressure, on one branch, lie :data:`FILES_APART_SHARE` apart or more in two
-    files (the larger pair said): files of two muscle states no column tells apart, or ``""``.
+    files (the larger pair said; above :data:`FILES_APART_FLOOR`): files of two muscle states no
+    column tells apart, or ``""``.
     A step's file is the one whose span on the run's clock holds its start."""
     starts = np.array([f["placed_at_s"] for f in files])
+    floor = FILES_APART_FLOOR * max((abs(s.force_N_mean) for s in steps), default=0.0)
 
     def file_of(step: StepRecord) -> str:
         return files[max(int(np.searchsorted(starts, step.start_s, side="right")) - 1, 0)]["file"]
@@ -609,7 +614,7 @@ def _files_apart(steps: list[StepRecord], files: list[dict]) -> str:
     worst = None
     for a, b in itertools.combinations(steps, 2):
         larger = max(abs(a.force_N_mean), abs(b.force_N_mean))
-        if (a.direction != b.direction or larger <= 0
+        if (a.direction != b.direction or not larger > floor
                 or abs(a.pressure_bar_mean - b.pressure_bar_mean) > series.PLATEAU_TOLERANCE_BAR
                 or file_of(a) == file_of(b)):
             continue
@@ -1086,7 +1091,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         back = np.flatnonzero(np.diff(time_s) < 0)
         if back.size:
             raise ValueError(backwards_message(
-                f"{group.where(int(back[0]) + 1, 'time')}",
+                group.where(int(back[0]) + 1, "time"),
                 found["time"].header, time_s[back[0]] - time_s[back[0] + 1],
                 newest_first=back.size == time_s.size - 1))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
