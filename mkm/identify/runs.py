@@ -63,6 +63,7 @@ class RunData:
     sha256: dict
     tare_se_N: float = 0.0
     timed: bool = True  # the holds have their real durations (creep can be fitted)
+    binned: bool = False  # an imported ramp: its steps are bins of a continuous sweep
     #: an imported run whose lab declared its accuracy (``mkm import --accuracy``): its steps'
     #: budgets stand for the noise a table's single values cannot show
     declared: bool = False
@@ -141,7 +142,8 @@ class RunData:
         if self.timed or not self.declared or not np.isfinite(force_u).all():
             return None
         pressure_u = np.nan_to_num(self.steps["pressure_u_bar"].to_numpy(dtype=float))
-        return np.sqrt(force_u**2 + (step_slopes(self.steps) * pressure_u) ** 2)
+        slopes = branch_slopes(self.steps) if self.binned else step_slopes(self.steps)
+        return np.sqrt(force_u**2 + (slopes * pressure_u) ** 2)
 
     def branch_sign(self) -> np.ndarray:
         """Per sample: +1 in the hold of a rising step, -1 of a falling one, 0 elsewhere (the
@@ -171,6 +173,25 @@ def shown_effects(runs) -> tuple[str, ...]:
     (:attr:`RunData.timed`)."""
     return ((("friction",) if any({"up", "down"} <= set(r.steps["direction"]) for r in runs)
              else ()) + (("creep",) if any(r.timed for r in runs) else ()))
+
+
+def branch_slopes(steps: pd.DataFrame) -> np.ndarray:
+    """dF/dP [N/bar] at each of a ramp's bins, along its own branch (each stretch of one
+    direction): a rising and a falling bin lie at pressures a few mbar apart, and
+    :func:`step_slopes` taken across the two would divide their friction's difference by
+    that."""
+    P = steps["pressure_bar_mean"].to_numpy(dtype=float)
+    F = steps["force_N_mean"].to_numpy(dtype=float)
+    direction = steps["direction"].to_numpy()
+    branch = np.r_[0, np.cumsum(direction[1:] != direction[:-1])]
+    slopes = np.zeros(P.size)
+    for b in np.unique(branch):
+        here = np.flatnonzero(branch == b)
+        if here.size < 2:
+            continue
+        order = here[np.argsort(P[here], kind="stable")]
+        slopes[order] = np.gradient(F[order], P[order])
+    return slopes
 
 
 def step_slopes(steps: pd.DataFrame) -> np.ndarray:
@@ -268,6 +289,8 @@ def load_run_data(path) -> RunData:
                 rate[k] = np.polyfit(time_s[inside], pressure[inside], 1)[0]
         pressure[inside] = step["pressure_bar_mean"]
     settled["pressure_se_bar"] = pressure_se
+    if is_ramp:
+        _with_turns(pressure, samples["pressure_bar"].to_numpy(dtype=float), hold, settled)
     # the ramp into a hold does not overshoot it (first-order regulator): clip its noise too
     in_step = samples["step"].to_numpy()
     for _, step in settled.iterrows():
@@ -284,8 +307,23 @@ def load_run_data(path) -> RunData:
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
-                   timed=not is_ramp, ramp_rate_bar_per_s=rate if is_ramp else None,
+                   timed=not is_ramp, binned=is_ramp,
+                   ramp_rate_bar_per_s=rate if is_ramp else None,
                    vented_bar=_vented(run), note=note, **_instrument(run))
+
+
+def _with_turns(pressure: np.ndarray, read: np.ndarray, hold: np.ndarray,
+                settled: pd.DataFrame) -> None:
+    """A ramp's bins, each at its mean pressure, with the pressure it turned at: where the
+    sweep turns, the sample of the highest (lowest) reading of the two bins about the turn
+    takes that reading, so that the friction model turns there and not at the bins' means,
+    below the turn (in place)."""
+    direction = settled["direction"].to_numpy()
+    for k in np.flatnonzero(direction[1:] != direction[:-1]):
+        around = np.flatnonzero((hold == k) | (hold == k + 1))
+        pick = np.argmax if direction[k] == "up" else np.argmin
+        j = around[pick(read[around])]
+        pressure[j] = read[j]
 
 
 def unverified_vent(run, name: str) -> str:
