@@ -25,6 +25,7 @@
 from __future__ import annotations
 
 import datetime
+import itertools
 import json
 import math
 import re
@@ -549,6 +550,8 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
             imported.update(file=tables[0].source.name, files=joined.files,
                             clock=joined.clock, between_files_s=between_files_s)
             built[-1][3].insert(0, joined.note)
+            if apart := _files_apart(built[-1][1], joined.files):
+                built[-1][3].append(apart)
         bar.done()
     shared = [k for k, g in enumerate(groups) if not {"eps", "length"} & set(g.columns)]
     if len(prepared) > 1 and len(shared) > 1 and muscle.get("eps") is not None:
@@ -585,6 +588,48 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
         bar.done()
     bar.end()
     return out
+
+
+#: two steps of one branch at one pressure, in two of a record's files, whose forces lie this
+#: share of the larger apart are said: a muscle's cycles repeat far closer, another length or
+#: another muscle does not ...
+FILES_APART_SHARE = 0.25
+#: ... where the larger pulls this share of the record's largest step force at least (a slack
+#: muscle's steps read the load cell's noise, any share of it apart)
+FILES_APART_FLOOR = 0.1
+
+
+def _files_apart(steps: list[StepRecord], files: list[dict]) -> str:
+    """The note on the steps of several files (:func:`mkm.bench.tables.join_files`) whose
+    forces at one pressure, on one branch, lie :data:`FILES_APART_SHARE` apart or more in two
+    files (the larger pair said; above :data:`FILES_APART_FLOOR`): files of two muscle states no
+    column tells apart, or ``""``.
+    A step's file is the one whose span on the run's clock holds its start."""
+    starts = np.array([f["placed_at_s"] for f in files])
+    floor = FILES_APART_FLOOR * max((abs(s.force_N_mean) for s in steps), default=0.0)
+
+    def file_of(step: StepRecord) -> str:
+        return files[max(int(np.searchsorted(starts, step.start_s, side="right")) - 1, 0)]["file"]
+
+    worst = None
+    for a, b in itertools.combinations(steps, 2):
+        larger = max(abs(a.force_N_mean), abs(b.force_N_mean))
+        if (a.direction != b.direction or not larger > floor
+                or abs(a.pressure_bar_mean - b.pressure_bar_mean) > series.PLATEAU_TOLERANCE_BAR
+                or file_of(a) == file_of(b)):
+            continue
+        share = abs(a.force_N_mean - b.force_N_mean) / larger
+        if share >= FILES_APART_SHARE and (worst is None or share > worst[0]):
+            worst = (share, a, b)
+    if worst is None:
+        return ""
+    share, a, b = worst
+    branch = "rising" if a.direction == "up" else "falling"
+    return (f"{branch} at {a.pressure_bar_mean:.3g} bar, {file_of(a)} reads "
+            f"{a.force_N_mean:.4g} N and {file_of(b)} {b.force_N_mean:.4g} N, "
+            f"{100 * share:.0f} % apart, where a muscle's cycles repeat far closer: if the files "
+            "hold two lengths or two muscles, import each one's files as a run of its own, with "
+            "its --eps (or --id)")
 
 
 def _lacks(table, missing: list[str]) -> str:
@@ -763,7 +808,10 @@ class _Group:
         return self.recognition.values(role, optional)[self.rows]
 
     def cell(self, k: int, role: str) -> str:
-        return self.table.cell(int(self.rows[k]), self.columns[role].index)
+        return self.table.ref(int(self.rows[k]), self.columns[role].index)
+
+    def where(self, k: int, role: str) -> str:
+        return self.table.where(int(self.rows[k]), self.columns[role].index)
 
     @property
     def named(self) -> str:
@@ -828,7 +876,7 @@ def _single(group: _Group, role: str) -> float:
     if role in ("length", "L0"):
         bad = np.flatnonzero(~(np.isfinite(values) & (values > 0)))
         if bad.size:
-            raise ValueError(f"{group.table.name}, cell {group.cell(int(bad[0]), role)} (column "
+            raise ValueError(f"{group.where(int(bad[0]), role)} (column "
                              f"{group.columns[role].header!r}): {values[bad[0]]:g} mm is not a "
                              "length: expected a finite length > 0 mm")
     return float(values[0])
@@ -1025,7 +1073,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     table, found = group.table, group.columns
     pressure, force = group.values("pressure"), force_sign * group.values("force")
     for k in np.flatnonzero(np.abs(force) > MAX_CAPACITY_N)[:1]:  # no load cell reads it
-        raise ValueError(f"{table.name}, cell {group.cell(int(k), 'force')} (column "
+        raise ValueError(f"{group.where(int(k), 'force')} (column "
                          f"{found['force'].header!r}): {force_sign * force[k]:g} N is beyond "
                          f"the largest load cell a bench takes ({MAX_CAPACITY_N:g} N): "
                          "expected a force reading (a logger's overload value, or a unit "
@@ -1043,7 +1091,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         back = np.flatnonzero(np.diff(time_s) < 0)
         if back.size:
             raise ValueError(backwards_message(
-                f"{table.name}, cell {group.cell(int(back[0]) + 1, 'time')}",
+                group.where(int(back[0]) + 1, "time"),
                 found["time"].header, time_s[back[0]] - time_s[back[0] + 1],
                 newest_first=back.size == time_s.size - 1))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
@@ -1140,17 +1188,17 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     for k in np.flatnonzero(outside("pressure_bar", pressure))[:1]:
         p = pressure[k]
         if p < 0 and below:
-            raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
+            raise ValueError(f"{group.where(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0 by more "
                              f"than {below[1](below[0][k])}: expected a gauge pressure >= "
                              f"{-below[0][k]:.3g} bar; if the sensor's accuracy is wider, "
                              f"declare it: --accuracy pressure={-p:g}bar")
         if p < 0:
-            raise ValueError(f"{table.name}, cell {group.cell(k, 'pressure')} (column "
+            raise ValueError(f"{group.where(k, 'pressure')} (column "
                              f"{found['pressure'].header!r}): {p:g} bar is below 0: expected a "
                              "gauge pressure >= 0 (--vented sets a vented reading to subtract)")
         try:
-            check_value("pressure_bar", p, f"{table.name}, cell {group.cell(k, 'pressure')}: ")
+            check_value("pressure_bar", p, f"{group.where(k, 'pressure')}: ")
         except ValueError as exc:  # beyond any gauge: a unit read as bar, as the note says
             raise ValueError(f"{exc}; {_other_pressure_units(top_bar, found['pressure'].unit)}"
                              ) from None
@@ -1272,10 +1320,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if shape == "staircase":
             from mkm.bench.config import load_config
 
-            steps, step_of = series.staircase_steps(time_s, pressure, force, load_config(),
+            settle_config = load_config()
+            steps, step_of = series.staircase_steps(time_s, pressure, force, settle_config,
                                                     held)
             handling["steps_from"] = ("plateaus judged by the bench's settle test "
                                       "(packaged [settle] criteria), averaged by HoldStats")
+            if unsettled := series.unsettled_note(pressure, held, steps, settle_config):
+                notes.append(unsettled)
         else:
             steps, step_of, width = series.ramp_steps(time_s, pressure, force)
             handling["steps_from"] = (f"quasi-static bins of {width:.3g} bar, rising and "

@@ -351,6 +351,40 @@ def staircase_steps(time_s, pressure_bar, force_N, settle_config,
     return records, step_of
 
 
+def unsettled_note(pressure_bar: np.ndarray, held: list[Plateau], steps: list[StepRecord],
+                   settle_config) -> str:
+    """What a staircase's steps that did not settle mean for the user (``""``: each settled):
+    ``mkm identify`` fits settled steps alone. One held before the record first vents between
+    two plateaus, with settled steps after, is a pre-conditioning cycle's top (a short hold
+    before the staircase starts from its vent): left out as it should be; any other is a
+    measured step lost, and a longer hold keeps it."""
+    vented = float(pressure_bar.min()) + PLATEAU_TOLERANCE_BAR
+    first_vent = next((j for j, (a, b) in enumerate(zip(held, held[1:], strict=False))
+                       if b.start > a.stop and pressure_bar[a.stop:b.start].min() <= vented),
+                      None)
+    later_settled = first_vent is not None and any(s.settled for s in steps[first_vent + 1:])
+    said = []
+    for k, step in enumerate(steps):
+        if step.settled:
+            continue
+        held_s = step.end_s - step.start_s
+        if later_settled and k <= first_vent:
+            said.append(f"step {k} at {step.set_pressure_bar:.3g} bar, held {held_s:.3g} s "
+                        "before the record vents and its staircase starts: a pre-conditioning "
+                        "cycle's top, not a step of the measurement: nothing to do")
+        else:
+            said.append(f"step {k} at {step.set_pressure_bar:.3g} bar, held {held_s:.3g} s: "
+                        "its force did not settle within the hold; to fit it, hold each step "
+                        f"longer than the bench's settle.min_dwell_s "
+                        f"({settle_config.settle.min_dwell_s:g} s) and until the force is "
+                        "steady")
+    if not said:
+        return ""
+    return (f"{len(said)} step(s) did not settle (the bench's settle test), kept in steps.csv "
+            "with settled = false and left out by mkm identify, which fits settled holds "
+            "alone: " + "; ".join(said))
+
+
 def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]) -> list[StepRecord]:
     """The steps of a staircase recorded without its time (its rows the clock: ``held`` found
     with :data:`RECORD_PLATEAU_ROWS`). Without time the bench's settle test cannot judge a

@@ -32,7 +32,10 @@ rising and falling readings (the regulator holds that reading at the command, so
 reads the command while the true pressure is off by the sensor's error), or a monitor output
 frozen at ``monitor_stuck_bar`` whatever the pressure (the regulator still regulating on its own
 sensor). A frame of stiffness ``frame_stiffness_N_per_mm`` lets the muscle shorten by ``F / k``
-under its own pull: the static force is the model's at the length that pull leaves it.
+under its own pull: the static force is the model's at the length that pull leaves it. Tubing
+between the regulator's outlet (where its sensor and the monitor read) and the muscle lags the
+muscle's pressure behind the outlet's by a first-order lag of ``line_tau_s``: on a ramp the force
+trails the monitored pressure, a loop between the branches that is not friction.
 
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
@@ -44,7 +47,8 @@ reading and every later command, a longer one overflows it and loses the samples
 failure, a load-cell input reading NaN or holding one value (``loadcell_stuck_at_s``: its cable
 or amplifier failed), a regulator that stops following, an overshoot, a monitor input that reads
 0 V (``monitor_lost_at_s``: regulator unpowered, wire off).
-:func:`describe_physics` says what the simulated muscle is (recorded in run.json).
+:func:`describe_physics` says what the simulated muscle is (recorded in run.json);
+:func:`logged_ramp` is a lab's logger record of a continuous ramp on it (for ``mkm import``).
 """
 
 from __future__ import annotations
@@ -205,7 +209,8 @@ def describe_physics(config) -> dict:
     departures = [f"true {k} {v:g} (declared {getattr(m, k):g})" for k, v in geometry.items()
                   if v != getattr(m, k)]
     departures += [f"{k} {getattr(s.truth, k):g}" for k in (*INSTRUMENT_BOUNDS,
-                                                            "frame_stiffness_N_per_mm")
+                                                            "frame_stiffness_N_per_mm",
+                                                            "line_tau_s")
                    if getattr(s.truth, k) is not None]
     return {
         "force_model": s.model, "force_model_params": model.params(),
@@ -236,6 +241,9 @@ class SimMuscleBench:
         self.lag = 1.0 - math.exp(-self.dt / s.regulator_tau_s)
         self.max_step_bar = s.regulator_slew_bar_per_s * self.dt
         self.relax = 1.0 - math.exp(-self.dt / s.creep_tau_s)
+        # the tubing's lag from the outlet to the muscle (none: the muscle at the outlet)
+        self.line_tau_s = s.truth.line_tau_s or 0.0
+        self.line_decay = math.exp(-self.dt / self.line_tau_s) if self.line_tau_s > 0 else 0.0
         self.rng = np.random.default_rng(s.seed)
         self.loadcell_gain = s.truth.instrument("loadcell_gain")
         self.loadcell_drift_N_per_min = s.truth.instrument("loadcell_drift_N_per_min")
@@ -253,7 +261,8 @@ class SimMuscleBench:
         self._noise = np.empty(0)
         self._next_noise = 0
         self.target_bar = 0.0
-        self.pressure_bar = 0.0
+        self.pressure_bar = 0.0  # at the regulator's outlet, where its sensor reads
+        self.muscle_pressure_bar = 0.0  # inside the muscle, behind its tubing
         self.hysteretic_N = 0.0
         self.relaxed_N = 0.0
         self.external_force_N = 0.0
@@ -299,10 +308,20 @@ class SimMuscleBench:
     def step(self) -> tuple[float, float]:
         """Advance one sample; return (load-cell volts, monitor volts) as the ADC reads them."""
         s, r, cell = self.config.sim, self.config.regulator, self.config.loadcell
+        outlet_bar = self.pressure_bar
         if not self.regulator_stuck:
             change = (self.target_bar - self.pressure_bar) * self.lag
             self.pressure_bar += min(max(change, -self.max_step_bar), self.max_step_bar)
-        static = float(np.interp(self.pressure_bar, self.table_p, self.table_F))
+        if self.line_tau_s > 0:
+            # the lag's exact answer to an outlet pressure linear between samples: a ramp is
+            # trailed by its rate times tau, not by the sample-and-hold's (0.95 tau at 10 Hz
+            # and 1 s)
+            trail_bar = self.line_tau_s * (self.pressure_bar - outlet_bar) / self.dt
+            self.muscle_pressure_bar = self.pressure_bar - trail_bar + self.line_decay * (
+                self.muscle_pressure_bar - outlet_bar + trail_bar)
+        else:
+            self.muscle_pressure_bar = self.pressure_bar
+        static = float(np.interp(self.muscle_pressure_bar, self.table_p, self.table_F))
         self.hysteretic_N, self.relaxed_N = advance(
             self.hysteretic_N, self.relaxed_N, static, s.hysteresis_fraction, s.creep_fraction,
             self.relax)
@@ -518,3 +537,25 @@ class SimBackend:
     def hang_mass(self, mass_kg: float) -> None:
         """Hang ``mass_kg`` on the load cell (for ``mkm calibrate-loadcell``)."""
         self.bench.external_force_N = mass_kg * STANDARD_GRAVITY
+
+
+def logged_ramp(config, top_bar: float, rate_bar_per_s: float, rest_s: float = 5.0):
+    """What a lab's logger records of the simulated bench under a continuous ramp: vented
+    ``rest_s``, the command ramped at ``rate_bar_per_s`` up to ``top_bar`` and back to 0,
+    vented ``rest_s`` again, one row per sample (``config.daq.sample_rate_hz``) of the time,
+    the monitor's pressure and the load cell's force as read (its offset in it: ``mkm
+    import`` tares it on the rest), a table for :func:`mkm.bench.exchange.import_table`."""
+    import pandas as pd
+
+    bench, r = SimMuscleBench(config), config.regulator
+    rise_s = top_bar / rate_bar_per_s
+    n = int(round((2 * rest_s + 2 * rise_s) / bench.dt))
+    time_s = np.arange(n) * bench.dt
+    commanded = np.interp(time_s, [0.0, rest_s, rest_s + rise_s, rest_s + 2 * rise_s],
+                          [0.0, 0.0, top_bar, 0.0])
+    volts = np.empty((n, 2))
+    for k in range(n):
+        bench.set_command_volts(r.command_volts(commanded[k]))
+        volts[k] = bench.step()
+    return pd.DataFrame({"t (s)": time_s, "P (bar)": r.monitor_bar(volts[:, 1]),
+                         "F (N)": volts[:, 0] * config.loadcell.sensitivity_N_per_V})

@@ -73,7 +73,10 @@ class Truth:
     the command. The frame: ``frame_stiffness_N_per_mm``, the frame, fixtures and load cell
     between the muscle's ends as one spring of that stiffness: the held length shortens by
     ``F / k`` under the muscle's pull ``F`` (its eps grows by ``F / (k L0)``; a real frame is
-    never rigid, and the force falls steeply with eps).
+    never rigid, and the force falls steeply with eps). The tubing: ``line_tau_s``, the time
+    constant of the first-order lag between the regulator's outlet, where its sensor and the
+    monitor read, and the muscle, which fills through its tubing: on a ramp of ``r`` bar/s the
+    muscle's pressure trails the monitor's by ``r * line_tau_s``.
 
     Unset (None): the declared value (``[muscle]``'s angle, rubber and gap where it gives
     them, else the calibrated angle, Silastic S, no gap; a bonded braid, the declared
@@ -98,6 +101,7 @@ class Truth:
     monitor_hysteresis_bar: float | None = None
     monitor_stuck_bar: float | None = None
     frame_stiffness_N_per_mm: float | None = None
+    line_tau_s: float | None = None
 
     def check(self):
         from mkm.fem.limits import check_theta0, check_value
@@ -113,6 +117,8 @@ class Truth:
         if self.frame_stiffness_N_per_mm is not None:
             within("sim.truth.frame_stiffness_N_per_mm", self.frame_stiffness_N_per_mm,
                    *FRAME_STIFFNESS_BOUNDS_N_PER_MM, "N/mm")
+        if self.line_tau_s is not None:
+            within("sim.truth.line_tau_s", self.line_tau_s, *LINE_TAU_BOUNDS_S, "s")
 
     def model_params(self) -> dict[str, float | str]:
         """The set values the force model takes (angle, rubber, gap, braid)."""
@@ -134,6 +140,8 @@ class Truth:
 #: a frame stiffness the simulator takes [N/mm]: from one that gives 1 mm under 1 N to about
 #: a steel block's
 FRAME_STIFFNESS_BOUNDS_N_PER_MM = (1.0, 1e7)
+#: a tubing lag the simulator takes [s]: none to a muscle filled through a long thin line
+LINE_TAU_BOUNDS_S = (0.0, 60.0)
 #: the truths the force model takes; the true geometry; the instruments' truths: their bounds
 #: and unit, and the exact instrument's value
 MODEL_FIELDS = ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "braid")

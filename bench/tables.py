@@ -258,6 +258,12 @@ class RawTable:
     properties: dict = field(default_factory=dict)
     #: what the reader warned of while reading a damaged file (npTDMS: a segment cut short)
     read_warnings: list[str] = field(default_factory=list)
+    #: each row's file where several files were joined into this table (:func:`join_files`);
+    #: empty for one file
+    row_files: list[str] = field(default_factory=list)
+    #: the lines above the header row (comments and titles), as written: what the file says
+    #: of the record (a held length, the muscle)
+    preamble: list[tuple[int, str]] = field(default_factory=list)
 
     @property
     def part(self) -> str:
@@ -273,6 +279,23 @@ class RawTable:
     def cell(self, k: int, column: int) -> str:
         """The spreadsheet reference of data row ``k``'s cell in ``column`` (``B7``)."""
         return f"{_column_letters(column)}{self.row_numbers[k]}"
+
+    def where(self, k: int, column: int) -> str:
+        """Data row ``k``'s cell in ``column`` with its file: ``lab.csv, cell B7``; of a
+        table joined from several files, the row's own file (``step4.csv, cell B7``)."""
+        name = self.row_files[k] if self.row_files else self.name
+        return f"{name}, cell {self.cell(k, column)}"
+
+    def ref(self, k: int, column: int) -> str:
+        """Data row ``k``'s cell in ``column`` as the lists of skipped rows name it: ``B7``,
+        and where several files were joined, its file too (``step4.csv B7``)."""
+        return (f"{self.row_files[k]} " if self.row_files else "") + self.cell(k, column)
+
+    def kept(self, keep) -> RawTable:
+        """The table of the data rows ``keep`` (indices, in order)."""
+        return replace(self, rows=[self.rows[k] for k in keep],
+                       row_numbers=[self.row_numbers[k] for k in keep],
+                       row_files=[self.row_files[k] for k in keep] if self.row_files else [])
 
     def describe(self) -> dict:
         """What the reader found, for the run folder's provenance."""
@@ -399,6 +422,9 @@ def _text_table(path: Path, text: str) -> RawTable:
                                          for c in cells])
     table = _with_header(path, None, [n for n, _ in parsed], [c for _, c in parsed], separator,
                          decimal)
+    # its comment lines too, where a lab notes what the columns do not hold
+    table = replace(table, preamble=[(n, line.strip()) for n, line in numbered
+                                     if n < table.header_row])
     return replace(table, interval=interval) if interval else table
 
 
@@ -979,7 +1005,10 @@ def _with_header(path, sheet, numbers, rows, separator, decimal) -> RawTable:
     return RawTable(path, sheet, header[:width], numbers[header_index], data,
                     numbers[first_data:end], header_index, separator, decimal,
                     footer_skipped=[f"A{numbers[k]} ({str(rows[k][0]).strip()[:40]!r})"
-                                    for k in range(end, len(rows))])
+                                    for k in range(end, len(rows))],
+                    preamble=[(numbers[k], " ".join(str(c).strip() for c in rows[k]
+                                                    if str(c).strip()))
+                              for k in range(header_index)])
 
 
 def _named_with_unit(where: str, row: int, name: str, unit: str) -> str:
@@ -1810,7 +1839,7 @@ def with_milliseconds(table: RawTable,
         if joined:
             ms = plain_number(row[index], table.decimal)
             if ms is None or ms != int(ms) or not 0 <= ms <= 999:
-                raise ValueError(f"{table.name}, cell {table.cell(k, index)} (column "
+                raise ValueError(f"{table.where(k, index)} (column "
                                  f"{table.header[index]!r}): {_shown(row[index])} is not the "
                                  f"milliseconds of its time {_shown(cell)}: expected a whole "
                                  "number from 0 to 999")
@@ -1973,7 +2002,7 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     raw = [row[column.index] for row in table.rows]
     if column.role == "time":
         if clock_format(column.unit) and raw and _clock(raw[0]) is None:
-            raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
+            raise ValueError(f"{table.where(0, column.index)} (column "
                              f"{column.header!r}): {_shown(raw[0])} is not a clock reading "
                              f"as the header's {column.unit!r} says: expected times such as "
                              "09:05:00.250, or a header naming the unit of its numbers "
@@ -1985,7 +2014,7 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
             days = _plain_numbers(raw, table.decimal)
             return (days - days[0]) * _DAY_S
         if raw and str(raw[0]).strip() and _number(raw[0], table.decimal)[0] is None:
-            raise ValueError(f"{table.name}, cell {table.cell(0, column.index)} (column "
+            raise ValueError(f"{table.where(0, column.index)} (column "
                              f"{column.header!r}): {_shown(raw[0])} is not a time: expected "
                              "seconds (or the unit in the header: Time [ms]), minutes and "
                              "seconds (05:03.2), a time of day (14:05:00.250, 2:05:00 PM) or a "
@@ -2013,10 +2042,10 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
                    "correct the formula, or delete its row"
                    if _SPREADSHEET_ERROR.fullmatch(str(cell).strip()) else
                    f"{_shown(cell)} is not a number")
-            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+            raise ValueError(f"{table.where(k, column.index)} (column "
                              f"{column.header!r}): {why}")
         if not math.isfinite(number):
-            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+            raise ValueError(f"{table.where(k, column.index)} (column "
                              f"{column.header!r}): {_shown(cell)} is not a finite number")
         if unit is not None:
             inline.setdefault(unit, k)
@@ -2026,9 +2055,9 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
         if len(inline) > 1 or (unit is not None and unit not in inline):
             (u1, k1), (u2, k2) = sorted({**({unit: -1} if unit and unit not in inline else {}),
                                          **inline}.items(), key=lambda kv: kv[1])[:2]
-            where1 = "the header" if k1 < 0 else f"cell {table.cell(k1, column.index)}"
+            where1 = "the header" if k1 < 0 else f"cell {table.ref(k1, column.index)}"
             raise ValueError(f"{table.name}: mixed units in column {column.header!r}: {u1!r} "
-                             f"in {where1}, {u2!r} in cell {table.cell(k2, column.index)}: "
+                             f"in {where1}, {u2!r} in cell {table.ref(k2, column.index)}: "
                              "expected one unit per column")
         unit = next(iter(inline))
         _check_unit(table, replace(column, unit=unit))
@@ -2073,7 +2102,7 @@ def _check_loop(table: RawTable, column: Column, current_mA: np.ndarray) -> None
     if outside.size:
         k = int(outside[0])
         more = f" ({outside.size - 1} more row(s) too)" if outside.size > 1 else ""
-        raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+        raise ValueError(f"{table.where(k, column.index)} (column "
                          f"{column.header!r}): {current_mA[k]:g} mA is outside the "
                          f"{low:g}-{high:g} mA a working 4-20 mA loop reads{more}: a broken "
                          "wire or a transmitter signalling a fault, its reading no "
@@ -2227,7 +2256,7 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     values = np.empty(len(raw))
     for k, (cell, reading) in enumerate(zip(raw, kinds, strict=True)):
         if reading is None or reading[0] != kinds[0][0]:
-            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+            raise ValueError(f"{table.where(k, column.index)} (column "
                              f"{column.header!r}): {_shown(cell)} is not a {kinds[0][0]} as "
                              f"the first row's {_shown(raw[0])}: expected one kind of time "
                              "per column")
@@ -2366,8 +2395,7 @@ def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
             row.append(float(value))
         joined[role] = column.header
     how += f", linearly; {kept.size} of {times.size} rows within its times"
-    return replace(table, header=header, rows=rows,
-                   row_numbers=[table.row_numbers[k] for k in kept],
+    return replace(table.kept(kept), header=header, rows=rows,
                    joined={"file": other.source.name, "columns": joined, "how": how,
                            "shift_s": shift, "rows_outside": int(times.size - kept.size)}), found
 
@@ -2411,14 +2439,12 @@ def without_summary_rows(table: RawTable) -> RawTable:
         lead = next((j for j, cell in enumerate(table.rows[k]) if str(cell).strip()), None)
         for column, cell in enumerate(table.rows[k]):
             if word(cell) and (column == lead or steps_number(column)):
-                named[k] = f"{table.cell(k, column)} ({cell.strip()!r})"
+                named[k] = f"{table.ref(k, column)} ({cell.strip()!r})"
                 break
     if not named:
         return table
     keep = [k for k in range(len(table.rows)) if k not in named]
-    return replace(table, rows=[table.rows[k] for k in keep],
-                   row_numbers=[table.row_numbers[k] for k in keep],
-                   summaries_skipped=list(named.values()))
+    return replace(table.kept(keep), summaries_skipped=list(named.values()))
 
 
 #: a spreadsheet's error values, a formula that failed, saved into a CSV as their text: Excel's
@@ -2491,11 +2517,10 @@ def without_blank_rows(table: RawTable, columns: list[Column]) -> RawTable:
 
     def named(k: int) -> str:
         text = str(table.rows[k][blank[k]]).strip()
-        return table.cell(k, blank[k]) + (f" ({text!r})" if text else "")
+        return table.ref(k, blank[k]) + (f" ({text!r})" if text else "")
 
     over = [k for k in skipped if _overload(table.rows[k][blank[k]])]
-    return replace(table, rows=[table.rows[k] for k in keep],
-                   row_numbers=[table.row_numbers[k] for k in keep],
+    return replace(table.kept(keep),
                    blanks_skipped=[named(k) for k in skipped if k not in set(over)],
                    overloads_skipped=[named(k) for k in over])
 
@@ -2516,7 +2541,7 @@ def check_channel_times(table: RawTable, found: dict[str, Column]) -> None:
             if x is not None and t is not None and not math.isclose(x, t, rel_tol=1e-9,
                                                                     abs_tol=1e-9):
                 raise ValueError(
-                    f"{table.name}, cell {table.cell(k, index)} (column 'X_Value'): "
+                    f"{table.where(k, index)} (column 'X_Value'): "
                     f"{_shown(row[index])} beside {_shown(row[time])} of the time column "
                     f"{found['time'].header!r}: its channel was sampled at other times: "
                     "expected one time per row; save the channels with one x column "
@@ -2541,14 +2566,12 @@ def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
     same_time = [k for k in range(1, len(rows)) if alike(k, indices[:1])]
     skipped = [k for k in same_time if alike(k, indices)]
     if len(skipped) < len(same_time):
-        return replace(table, times_shared=[table.cell(k, indices[0]) for k in same_time])
+        return replace(table, times_shared=[table.ref(k, indices[0]) for k in same_time])
     if not skipped:
         return table
     gone = set(skipped)
     keep = [k for k in range(len(rows)) if k not in gone]
-    return replace(table, rows=[rows[k] for k in keep],
-                   row_numbers=[table.row_numbers[k] for k in keep],
-                   repeats_skipped=[table.cell(k, indices[0]) for k in skipped])
+    return replace(table.kept(keep), repeats_skipped=[table.ref(k, indices[0]) for k in skipped])
 
 
 def _formula(table: RawTable, k: int, column: int) -> str | None:
@@ -2638,7 +2661,7 @@ def directions(table: RawTable, column: Column) -> list[str]:
     for k, value in enumerate(column_text(table, column)):
         word = DIRECTION_WORDS.get(value.lower())
         if word is None:
-            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+            raise ValueError(f"{table.where(k, column.index)} (column "
                              f"{column.header!r}): {_shown(value)} is not a direction: expected "
                              f"one of {', '.join(DIRECTION_WORDS)}")
         out.append(word)
@@ -2652,7 +2675,7 @@ def flags(table: RawTable, column: Column) -> np.ndarray:
     out = np.zeros(len(table.rows), dtype=bool)
     for k, value in enumerate(column_text(table, column)):
         if value.lower() not in words:
-            raise ValueError(f"{table.name}, cell {table.cell(k, column.index)} (column "
+            raise ValueError(f"{table.where(k, column.index)} (column "
                              f"{column.header!r}): {_shown(value)} is not a flag: expected 1 or 0")
         out[k] = words[value.lower()]
     return out
@@ -2785,6 +2808,68 @@ def table_files(given: list[str | Path]) -> list[Path]:
     return files
 
 
+_DECLARED_NUMBER = r"([-+]?\d+(?:[.,]\d+)?)"
+#: what a file's comment or title lines declare of the muscle's state, each a pattern whose
+#: groups are the value and its unit: a rest length, a held length (``L = 135 mm``, not
+#: ``LM8``), an eps, the muscle's id (one holding a digit, ``LM-8``: not ``muscle pressure``)
+DECLARED_STATE = {
+    "L0": re.compile(r"(?:\bL_?0|\b(?:rest(?:ing)?|initial|nominal|free)\s+length)\s*[:=]?\s*"
+                     + _DECLARED_NUMBER + r"\s*(mm|cm|m)\b", re.IGNORECASE),
+    "length": re.compile(r"(?:\b(?:held\s+|fixed\s+|clamped\s+)?length|\bl(?:ä|ae)nge"
+                         r"|\bL(?:_?held)?(?=\s*[:=]))\s*[:=]?\s*" + _DECLARED_NUMBER
+                         + r"\s*(mm|cm|m)\b", re.IGNORECASE),
+    "eps": re.compile(r"(?:\beps(?:ilon)?|ε|\bstrain|\bcontraction|\bkontraktion)\s*[:=]?\s*"
+                      + _DECLARED_NUMBER + r"\s*(%)?", re.IGNORECASE),
+    "muscle": re.compile(r"\b(?:muscle|muskel)(?:\s+id)?\s*[:=]?\s*([A-Za-z][\w.-]*?\d[\w.-]*)"
+                         r"()(?=[\s,;)]|$)", re.IGNORECASE),
+}
+_TO_MM = {"mm": 1.0, "cm": 10.0, "m": 1000.0}
+
+
+def declared_state(preamble: list[tuple[int, str]]) -> dict[str, tuple[object, str, int]]:
+    """What a file's lines above its header declare of the muscle's state
+    (:data:`DECLARED_STATE`): role -> (value: mm, a fraction or the id; as written; line),
+    each role's first."""
+    found: dict[str, tuple[object, str, int]] = {}
+    for number, line in preamble:
+        taken: list[tuple[int, int]] = []
+        for role, pattern in DECLARED_STATE.items():
+            for match in pattern.finditer(line):
+                if role in found or any(a < match.end() and match.start() < b
+                                        for a, b in taken):
+                    continue  # a rest length is no held length
+                taken.append(match.span())
+                text, unit = match.group(1), match.group(2)
+                if role == "muscle":
+                    value: object = text
+                else:
+                    value = float(text.replace(",", "."))
+                    value = (value * _TO_MM[unit.lower()] if role in ("L0", "length")
+                             else value / 100 if unit else value)
+                found[role] = (value, match.group(0).strip(), number)
+    return found
+
+
+def _check_declared_states(read: list[tuple[Path, RawTable, dict]]) -> None:
+    """``ValueError`` where two files' headers declare different muscle states (a held length,
+    a rest length, an eps or a muscle id): one run of one state cannot hold both."""
+    declared = [(path.name, declared_state(table.preamble)) for path, table, _ in read]
+    for role in DECLARED_STATE:
+        said = [(name, state[role]) for name, state in declared if role in state]
+        for name, (value, text, line) in said[1:]:
+            first, (value0, text0, line0) = said[0]
+            same = (value == value0 if role == "muscle" else
+                    math.isclose(value, value0, rel_tol=1e-6, abs_tol=1e-9))
+            if not same:
+                what = ("import each muscle's files as a run of its own, with its --id"
+                        if role == "muscle" else "import each state's files as a run of its "
+                        "own, with its --eps" + (" and --L0" if role == "L0" else ""))
+                raise ValueError(f"{name}: its header declares {text!r} (line {line}), "
+                                 f"{first}'s {text0!r} (line {line0}): two muscle states, "
+                                 "which one run cannot hold: expected the files of one muscle "
+                                 f"at one length; {what}")
+
+
 @dataclass
 class JoinedFiles:
     """Several files of one record read as one table (:func:`join_files`)."""
@@ -2807,8 +2892,7 @@ def _file_clock(table: RawTable, found: dict[str, Column]):
     times = column_values(table, found["time"])
     if times.size and np.any(np.diff(times) < 0):
         k = int(np.flatnonzero(np.diff(times) < 0)[0]) + 1
-        raise ValueError(backwards_message(f"{table.name}, cell "
-                                           f"{table.cell(k, found['time'].index)}",
+        raise ValueError(backwards_message(table.where(k, found["time"].index),
                                            found["time"].header, times[k - 1] - times[k]))
     origin = _time_origin(table, found["time"])
     return times, (origin[1] if origin else None)
@@ -2870,6 +2954,7 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
                                  f"{first_found['muscle'].header!r}, {first_path.name}: "
                                  f"{', '.join(map(repr, first_named))}: expected the files of "
                                  "one muscle's run")
+    _check_declared_states(read)
     clocks = []
     for path, table, found in read:
         if not table.rows:
@@ -2909,7 +2994,7 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
                          "and not every file's clock starts at 0: expected the files of one "
                          "run, one after another on one clock or each counting from its own "
                          "start")
-    rows, numbers, files = [], [], []
+    rows, numbers, row_files, files = [], [], [], []
     index = first_found["time"].index
     for j, k in enumerate(order):
         path, table, found = read[k]
@@ -2919,6 +3004,7 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
             row[index] = float(t)
             rows.append(row)
         numbers += table.row_numbers
+        row_files += [path.name] * len(table.rows)
         files.append({"file": path.name, "sha256": file_sha256(path), "rows": len(table.rows),
                       "clock_as_read_s": [float(times[0]), float(times[-1])],
                       "placed_at_s": float(placed[j])})
@@ -2939,7 +3025,7 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
                    "file's start; --between-files SECONDS gives the time from one file's last "
                    "sample to the next one's first"))
     source = first_path.with_name(f"{first_path.name} and {len(files) - 1} more")
-    table = replace(first, source=source, rows=rows, row_numbers=numbers)
+    table = replace(first, source=source, rows=rows, row_numbers=numbers, row_files=row_files)
     found = {**first_found, "time": Column("time", index, first_found["time"].header, "s")}
     return JoinedFiles(table, found, files, clock, note)
 

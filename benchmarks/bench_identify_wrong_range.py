@@ -28,7 +28,14 @@ errors at once:
   theirs): the frame, fixtures and load cell yield under the muscle's pull as one spring
   (``[sim.truth] frame_stiffness_N_per_mm``), 0.5-2 mm at the load cell's capacity (a few
   hundred N/mm on the smaller cells, a few thousand on the 1000 kg one): the held length
-  shortens by the force over the stiffness.
+  shortens by the force over the stiffness;
+- ``tubing lag`` and ``tubing lag on ramps`` (drawn only when asked for by name): the muscle
+  fills through tubing behind the regulator's outlet, where the monitor reads (``[sim.truth]
+  line_tau_s``, a first-order lag of 0.2-2 s); the runs are the staircase of the others, or,
+  on ramps, one continuous ramp per eps up to the plan's top pressure and back, reaching it
+  in 60-120 s (:func:`mkm.bench.sim.logged_ramp`, as a lab's logger records it), imported
+  with the instruments' declared accuracy (the load cell's 0.05 % of its capacity, a 0.25 %
+  class transducer's 0.25 % of the monitor's full scale) so that the fit is judged.
 
 The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
 the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
@@ -64,11 +71,14 @@ from bench_identify_rubbers import (
     truth_text,
 )
 
+from mkm.bench.exchange import import_table, parse_accuracy
 from mkm.bench.run import acquire
+from mkm.bench.sim import logged_ramp
 from mkm.bench.sim_settings import remove_simulator_settings
 
 FIRST_SEED = 20261601
-DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance")
+DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubing lag",
+              "tubing lag on ramps")
 #: what ``--departures`` draws by default: the recorded results' set
 DEFAULT_DEPARTURES = DEPARTURES[:3]
 #: the fields of a draw's printed line
@@ -95,6 +105,10 @@ def depart(muscle: dict, departure: str) -> dict:
         out["frame_mm_at_capacity"] = float(rng.uniform(0.5, 2.0))
         truth["frame_stiffness_N_per_mm"] = plan(muscle)["capacity_N"] / out[
             "frame_mm_at_capacity"]
+    elif departure.startswith("tubing lag"):
+        truth["line_tau_s"] = float(rng.uniform(0.2, 2.0))
+        if departure.endswith("ramps"):
+            out["ramp_to_top_s"] = float(rng.uniform(60.0, 120.0))
     return out
 
 
@@ -112,6 +126,20 @@ def declare(run: Path, L0_mm: float, eps: float) -> None:
     (run / "run.json").write_text(json.dumps(meta, indent=2), encoding="utf-8")
 
 
+def ramp_run(muscle: dict, config, out: Path) -> Path:
+    """One continuous ramp of ``config`` to its top pressure and back, as a lab's logger
+    records it, imported with the instruments' declared accuracy."""
+    top_bar = config.sequence.pressures_bar[-1]
+    table = out / f"ramp_{muscle['seed']}_{config.muscle.eps:g}.csv"
+    out.mkdir(parents=True, exist_ok=True)
+    logged_ramp(config, top_bar, top_bar / muscle["ramp_to_top_s"]).to_csv(table, index=False)
+    accuracy = (f"force={0.0005 * config.loadcell.capacity_N:g}N,"
+                f"pressure={0.0025 * config.regulator.full_scale_bar:g}bar")
+    (imported,) = import_table(table, out, config.muscle.record(),
+                               accuracy=parse_accuracy(accuracy))
+    return imported.path
+
+
 def acquire_blind(muscle: dict, declared: dict, out: Path) -> list[Path]:
     """The runs at ``declared``'s eps, each simulated at the muscle's true length and eps and
     declared as ``declared`` says."""
@@ -119,6 +147,9 @@ def acquire_blind(muscle: dict, declared: dict, out: Path) -> list[Path]:
     simulated = {**declared, "eps": [true_eps(muscle, e) for e in declared["eps"]]}
     for k, eps in enumerate(declared["eps"]):
         config = config_for(muscle, simulated, simulated["eps"][k], k)
+        if "ramp_to_top_s" in muscle:
+            paths.append(ramp_run(muscle, config, out))
+            continue
         result = acquire(config, out_root=out, notify=lambda message: None)
         if result.status != "complete":
             raise RuntimeError(f"the simulated run at eps {eps:g} ended {result.status}")
@@ -139,6 +170,10 @@ def departure_value(muscle: dict) -> str:
                 f"({100 * (muscle['declared_L0_mm'] / muscle['L0_mm'] - 1):+.2f} %)")
     if muscle["departure"] == "sliding braid":
         return f"sliding, friction {muscle['hysteresis_fraction']:.3f}"
+    if muscle["departure"].startswith("tubing lag"):
+        ramp = (f", ramps reaching the top in {muscle['ramp_to_top_s']:.0f} s"
+                if "ramp_to_top_s" in muscle else "")
+        return f"tubing lag {t['line_tau_s']:.2f} s{ramp}"
     return (f"frame {t['frame_stiffness_N_per_mm']:.4g} N/mm ({muscle['frame_mm_at_capacity']:.2f}"
             " mm at the cell's capacity)")
 
@@ -219,7 +254,7 @@ def first_said(verdict: str | None) -> str:
     if not marks:
         return "-"
     first = verdict.split(marks[0])[1]
-    for key, said in (("frame yielding", "frame"),
+    for key, said in (("trails the pressure", "lag"), ("frame yielding", "frame"),
                       ("braid from a creep", "braid, creep or load cell"),
                       ("load cell", "load cell or creep"),
                       ("rest length", "rest length or gap"), ("braid", "braid"),

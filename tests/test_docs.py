@@ -2750,6 +2750,49 @@ def test_the_guides_frame_that_yields_is_its_measured_file():
     assert (f"one sweep per run of the model the fit searched with: {sum(sweeps)} sweeps over the "
             f"{len(draws)} draws (the table's `frame_check`), all of the surrogate") in said
 
+def test_the_guides_lag_between_monitor_and_muscle_is_its_measured_file():
+    """calibration.md's words on identify's defaults with tubing between the monitor and the
+    muscle: held to ``identify_wrong_range_lag.json`` (the verdicts' counts per shape, the lag
+    notes, the friction missed, the fitted lag against the truth's)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_range_lag.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    said = text[text.index("**A lag between the monitor and the muscle.**"):]
+    said = said[:said.index("### What the intervals carry")]
+    assert record["command"] == (
+        "benchmarks/bench_identify_wrong_range.py --draws 8 --seed 20261601 --departures "
+        "\"tubing lag,tubing lag on ramps\" --out docs/measured/identify_wrong_range_lag.json")
+
+    def lag_note(draw):
+        return next((n for n in draw["notes"] if n.startswith("lag: ")), None)
+
+    for departure, shape in (("tubing lag", "staircases"), ("tubing lag on ramps", "ramps")):
+        draws = [d for d in record["draws"] if d["departure"] == departure]
+        count = {v: sum(d["verdict"] == v for d in draws) for v in ("covered", "warned",
+                                                                      "SILENT")}
+        tau = [d["muscle"]["truth"]["line_tau_s"] for d in draws]
+        assert (f"On the {shape} ({len(draws)} draws, lags {min(tau):.2g}-{max(tau):.2g} s), "
+                f"{count['covered']} were covered, {count['warned']} warned and "
+                f"{count['SILENT']} `SILENT`") in said
+    staircases = [d for d in record["draws"] if d["departure"] == "tubing lag"]
+    assert not any(lag_note(d) for d in staircases)
+    assert "and no fit names a lag" in said
+    ramps = [d for d in record["draws"] if d["departure"] == "tubing lag on ramps"]
+    assert all(lag_note(d) for d in ramps)
+    assert all(d["verdict_line"].find("first, the force trails the pressure by about")
+               == d["verdict_line"].find("first, ") > 0 for d in ramps)
+    warned = [d for d in ramps if d["verdict"] == "warned"]
+    assert all(d["missed"] == ["hysteresis_fraction"] and d["misfit_line"] is None
+               for d in warned)
+    assert (f"The {len(warned)} warned fit within their noise, the lag's loop taken for "
+            "friction, whose interval misses the truth") in said
+    ratio = [float(re.search(r"by about (\S+) s", lag_note(d)).group(1))
+             / d["muscle"]["truth"]["line_tau_s"] for d in ramps]
+    assert (f"the fitted lag is {min(ratio):.2f}-{max(ratio):.2f} times the truth's") in said
+
+
 def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
     """calibration.md's words on identify's defaults on a bench wrong several ways at once:
     held to ``identify_wrong_range.json`` (the verdicts' counts, the rest lengths' misfits and

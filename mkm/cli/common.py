@@ -15,6 +15,7 @@ from mkm.core.records import (
     write_csv_with_sidecar,
     write_prediction_csv,
 )
+from mkm.flags import FLAG_OF, dests
 from mkm.registry import entries, entry, parse_spec
 
 
@@ -56,29 +57,18 @@ def error_line(prog: str, message) -> str:
     return "\n".join(f"{prog}: error: {line}" for line in message.splitlines() or [""])
 
 
-#: The flag that sets a checked quantity: a library's ``D0_mm=-1 is invalid: ...`` about a
-#: value the user typed as ``--D0 -1`` is said about the flag.
-FLAGS = {"D0_mm": ("--D0", "D0"), "t0_mm": ("--t0", "t0"), "L0_mm": ("--L0", "L0"),
-         "eps": ("--eps", "eps"), "muscle.eps": ("--eps", "eps"),
-         "theta0_deg": ("--theta0", "theta0"), "tolerance": ("--tolerance", "tolerance"),
-         # mkm design's constraints
-         "max_pressure_bar": ("--max-pressure", "max_pressure_bar"),
-         "max_outer_diameter_mm": ("--max-outer-diameter", "max_outer_diameter_mm"),
-         "gap_mm": ("--gap", "gap_mm"), "splits": ("--splits", "splits"),
-         "seeds": ("--seeds", "seeds"), "jobs": ("--jobs", "jobs")}
-
-
 def name_the_flag(args, message) -> str:
-    """``message`` about a quantity the command line set, said about its flag: each of its
-    problems (a line, or a part after ``; ``) that opens with ``name=value``:
-    ``D0_mm=-1 is invalid: expected ...`` -> ``--D0 -1: expected ...``, ``gap_mm=4 is too
-    wide ...`` -> ``--gap 4 is too wide ...`` (unchanged when the value came from elsewhere:
-    a config file, a model spec)."""
+    """``message`` about a quantity the command line set, said about its flag
+    (:data:`mkm.flags.FLAG_OF`): each of its problems (a line, or a part after ``; ``) that
+    opens with ``name=value``: ``D0_mm=-1 is invalid: expected ...`` -> ``--D0 -1: expected
+    ...``, ``gap_mm=4 is too wide ...`` -> ``--gap 4 is too wide ...`` (unchanged when the
+    value came from elsewhere: a config file, a spec file, a model spec)."""
 
     def flagged(found) -> str:
-        flag, dest = FLAGS.get(found.group(2), (None, None))
-        if flag is None or getattr(args, dest, None) is None:
+        name = found.group(2)
+        if name not in FLAG_OF or all(getattr(args, d, None) is None for d in dests(name)):
             return found.group(0)
+        flag = FLAG_OF[name]
         said = ": " if found.group(4) else " "
         return f"{found.group(1)}{flag} {found.group(3)}{said}"
 

@@ -15,6 +15,7 @@ from mkm.cli.common import (
     with_calibration,
 )
 from mkm.core.ranges import parse_fraction, parse_number
+from mkm.flags import FLAG_OF, unit_of
 
 EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
            "--t0 2:3 --out mkm-out/design; robust: add --tolerance D0=0.3,t0=0.1,theta0=1")
@@ -103,32 +104,28 @@ def register(subparsers) -> None:
     p.add_argument("--spec", metavar="FILE", help="TOML spec: [[requirement]] tables "
                    "(force_N, pressure_bar, eps), [constraints], objective, top; the flags "
                    "add requirements and override the rest")
-    for flag, key, what in (("--D0", "D0_mm", shared_help("--D0", "default: the surrogate's "
-                                                          "training box")),
-                            ("--t0", "t0_mm", shared_help("--t0", "default: the surrogate's "
-                                                          "training box")),
-                            ("--L0", "L0_mm", shared_help(
-                                "--L0", "default: the length of the muscle --calibration was "
-                                "identified on, else 282")),
-                            ("--theta0", "theta0_deg", shared_help("--theta0", "default: the "
-                                                                   "calibration"))):
-        unit = key.rsplit("_", 1)[1]  # 3.5cm or 30deg converted, as in a spec file
-        p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag, unit),
-                       metavar="V|LO:HI",
-                       help=f"{what}: a value or a range low:high")
-    p.add_argument("--rubber", action=derived_help(_rubber_help))
-    p.add_argument("--max-outer-diameter", dest="max_outer_diameter_mm", metavar="MM",
-                   type=argtype(parse_number, "--max-outer-diameter", "mm"),
-                   help="largest outer diameter at the working pressure [mm] (the housing; "
-                   "default: none, any width fits)")
-    p.add_argument("--gap", dest="gap_mm", metavar="MM", type=argtype(parse_number, "--gap", "mm"),
-                   help="radial gap between tube and braid at rest of the muscles as built "
-                   "[mm] (default 0): the surrogate has none, so the FE model, which takes "
-                   "it, searches and verifies")
-    p.add_argument("--max-pressure", dest="max_pressure_bar", metavar="BAR",
-                   type=argtype(parse_number, "--max-pressure", "bar"),
-                   help="largest working pressure [bar] (default: the requirements' largest)")
-    p.add_argument("--tolerance", metavar="D0=MM,t0=MM,theta0=DEG[,...]",
+    # each constraint by its flag (mkm.flags, which design's hints name), kept under its key
+    for key, default in (("D0_mm", "the surrogate's training box"),
+                         ("t0_mm", "the surrogate's training box"),
+                         ("L0_mm", "the length of the muscle --calibration was identified on, "
+                          "else 282"),
+                         ("theta0_deg", "the calibration")):
+        flag = FLAG_OF[key]  # 3.5cm or 30deg converted (unit_of), as in a spec file
+        p.add_argument(flag, dest=key, type=argtype(_spec("parse_bounds"), flag, unit_of(key)),
+                       metavar="V|LO:HI", help=f"{shared_help(flag, f'default: {default}')}: "
+                       "a value or a range low:high")
+    p.add_argument(FLAG_OF["rubber"], action=derived_help(_rubber_help))
+    for key, metavar, what in (
+            ("max_outer_diameter_mm", "MM", "largest outer diameter at the working pressure "
+             "[mm] (the housing; default: none, any width fits)"),
+            ("gap_mm", "MM", "radial gap between tube and braid at rest of the muscles as built "
+             "[mm] (default 0): the surrogate has none, so the FE model, which takes it, "
+             "searches and verifies"),
+            ("max_pressure_bar", "BAR", "largest working pressure [bar] (default: the "
+             "requirements' largest)")):
+        p.add_argument(FLAG_OF[key], dest=key, metavar=metavar, help=what,
+                       type=argtype(parse_number, FLAG_OF[key], unit_of(key)))
+    p.add_argument(FLAG_OF["tolerance"], metavar="D0=MM,t0=MM,theta0=DEG[,...]",
                    type=argtype(_tolerances),
                    help="robust designs: +- tolerances the muscle is built to (D0, t0, L0 [mm], "
                    "eps, theta0 [deg], rubber [%% of C10 and C01]), e.g. "
@@ -138,7 +135,7 @@ def register(subparsers) -> None:
                    action=derived_help(_probability_help))
     p.add_argument("--objective", type=_objective, metavar="OBJECTIVE",
                    action=derived_help(_objective_help))
-    p.add_argument("--top", type=int, metavar="N", action=derived_help(_top_help))
+    p.add_argument(FLAG_OF["top"], type=int, metavar="N", action=derived_help(_top_help))
     p.add_argument("--mesh", choices=choices("axisym", "mesh"), default="medium",
                    help="FE mesh of the verification (default: %(default)s, the converged one)")
     p.add_argument("--surrogate", default="surrogate", metavar="SPEC",

@@ -43,17 +43,21 @@ BUILT_ANGLE_TOLERANCE_DEG = 1.0
 
 
 def steeper_braid_N(row, requirements, calibration: Calibration | None,
-                    gap_mm: float = 0.0) -> list[float]:
+                    gap_mm: float = 0.0, cache_dir=None) -> list[float]:
     """Per requirement, the FE force [N] of design ``row`` with its braid
     :data:`BUILT_ANGLE_TOLERANCE_DEG` steeper (the force falls as the angle grows), on the
-    mesh of its row; 0 where the braid locks there or the FE gives no force."""
+    mesh of its row; 0 where the braid locks there or the FE gives no force. Each solve is
+    kept in the prediction cache ``cache_dir`` as the verification's sweeps are (None: no
+    cache)."""
+    from mkm.prediction_cache import cached_predict
+
     model = fe_model(row["fe_mesh"], row["L0_mm"],
                      float(row["theta0_deg"]) + BUILT_ANGLE_TOLERANCE_DEG, row["rubber"],
                      calibration, gap_mm)
     out = []
     for r in requirements:
-        prediction = model.predict(r.pressure_bar, float(row["D0_mm"]), float(row["t0_mm"]),
-                                   r.eps)
+        prediction, _ = cached_predict(model, r.pressure_bar, float(row["D0_mm"]),
+                                       float(row["t0_mm"]), r.eps, cache_dir=cache_dir)
         force = float(np.ravel(prediction.force_N)[0])
         out.append(force if bool(np.ravel(prediction.valid)[0]) and np.isfinite(force)
                    else 0.0)
@@ -61,12 +65,13 @@ def steeper_braid_N(row, requirements, calibration: Calibration | None,
 
 
 def identified_band_N(row, requirements, calibration: Calibration | None,
-                      gap_mm: float = 0.0) -> list[float | None]:
+                      gap_mm: float = 0.0, cache_dir=None) -> list[float | None]:
     """Per requirement, the 95 % half-width [N] of design ``row``'s FE force that the
     identified muscle's own uncertainty gives (:func:`mkm.identify.band.prediction_band`: the
     intervals ``mkm identify`` wrote into ``calibration``, carried through the FE model at the
-    design's geometry); None where the calibration holds no identified FE muscle, or the
-    design takes another braid angle or rubber than the identified one, or a gap."""
+    design's geometry, its solves kept in the prediction cache ``cache_dir``); None where the
+    calibration holds no identified FE muscle, or the design takes another braid angle or
+    rubber than the identified one, or a gap."""
     from mkm.identify.band import identified_entry, prediction_band
 
     found = identified_entry(calibration) if calibration is not None else None
@@ -78,7 +83,7 @@ def identified_band_N(row, requirements, calibration: Calibration | None,
     for k, r in enumerate(requirements, start=1):
         band = prediction_band(spec, calibration, np.array([float(row[f"r{k}_fe_N"])]),
                                np.array([r.pressure_bar]), float(row["D0_mm"]),
-                               float(row["t0_mm"]), r.eps)
+                               float(row["t0_mm"]), r.eps, cache_dir)
         out.append(None if band is None else float(np.ravel(band)[0]))
     return out
 

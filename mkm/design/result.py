@@ -131,9 +131,10 @@ class DesignResult:
         design outside the practical range or on its limit (:func:`~mkm.design.box_search.
         range_limits`), one that meets a requirement by less than the mesh's error and was
         verified again on a finer one, a robust design below the probability asked (none
-        verified holds it), one whose worst corner the FE did not solve, and one met by less
-        than the identified muscle's own uncertainty allows at the default probability
-        (:func:`held_with`) and a chosen tube of the identified rubber other than the
+        verified holds it), one whose worst corner the FE did not solve, the chosen design's
+        forces with the identified muscle's own uncertainty, the probability each holds
+        (:meth:`identified_probability`) and the ``--tolerance`` where one is below the
+        default probability, and a chosen tube of the identified rubber other than the
         identified muscle's (:func:`_another_tube`), or, where no identified
         muscle says, by less than a braid 1 deg steeper takes away (:attr:`steeper_braid_N`).
         Empty when none."""
@@ -178,19 +179,8 @@ class DesignResult:
             notes.append(f"the FE gave no force at the worst corner of the tolerances of the "
                          f"chosen design for {', '.join(unsolved)} ({best['fe_failure']}): "
                          "whether the muscle built to them meets it there is not verified")
-        for k, band in enumerate(self.identified_band_N, start=1):
-            margin = None if best is None else float(best[f"r{k}_fe_margin_N"])
-            held = None if band is None or margin is None else held_with(margin, band)
-            if held is not None and held < DEFAULT_PROBABILITY:
-                ask = (f"--tolerance {self.identified_tolerance} --probability "
-                       f"{DEFAULT_PROBABILITY:g}" if self.identified_tolerance else "--tolerance")
-                notes.append(f"the chosen design meets r{k} ({s.requirements[k - 1].label}) by "
-                             f"{margin:.3g} N at the calibration's values; the identified "
-                             f"muscle's own uncertainty there is +-{band:.3g} N (95 %, its "
-                             "intervals carried through the FE model), so it holds with about "
-                             f"{100 * held:.0f} % probability: design for "
-                             f"{100 * DEFAULT_PROBABILITY:g} % ({ask}: the intervals as build "
-                             "tolerances) or require more force")
+        if best is not None and (held := self.identified_probability()):
+            notes.append(self._band_note(best, held))
         if best is not None and str(best["rubber"]) == CALIBRATED_RUBBER:
             notes += _another_tube(best, s.calibration)
         short = [(k, force) for k, force in enumerate(self.steeper_braid_N, start=1)
@@ -213,6 +203,35 @@ class DesignResult:
                          f"{best['fe_mesh']} mesh, where it meets every requirement by "
                          f"{best['min_fe_margin_pct']:.2g} % or more")
         return notes
+
+    def identified_probability(self) -> dict[int, float]:
+        """Per requirement ``k`` with an identified band, the probability the chosen design
+        meets it (:func:`held_with` of its FE margin and :attr:`identified_band_N`); empty
+        without a band or a chosen design."""
+        best = self.chosen
+        return {} if best is None else {
+            k: held_with(float(best[f"r{k}_fe_margin_N"]), band)
+            for k, band in enumerate(self.identified_band_N, start=1) if band is not None}
+
+    def _band_note(self, best, held: dict[int, float]) -> str:
+        """The chosen design's FE force at each requirement with the identified muscle's band,
+        the probability it holds, and what to do where one is below
+        :data:`~mkm.design.spec.DEFAULT_PROBABILITY`."""
+        target = 100 * DEFAULT_PROBABILITY
+        forces = "; ".join(
+            f"r{k} ({self.search.requirements[k - 1].label}) {float(best[f'r{k}_fe_N']):.4g} "
+            f"+- {self.identified_band_N[k - 1]:.3g} N, met by "
+            f"{float(best[f'r{k}_fe_margin_N']):.3g} N: {_chance(p)}" for k, p in held.items())
+        text = (f"the chosen design's FE forces at the calibration's values, with the identified "
+                f"muscle's own uncertainty (95 %, its intervals carried through the FE model): "
+                f"{forces}")
+        short = [f"r{k}" for k, p in held.items() if p < DEFAULT_PROBABILITY]
+        if not short:
+            return text + f"; every requirement holds with {target:g} % or more"
+        ask = (f"--tolerance {self.identified_tolerance} --probability {DEFAULT_PROBABILITY:g}"
+               if self.identified_tolerance else "--tolerance")
+        return (text + f"; {', '.join(short)} below {target:g} %: design for {target:g} % "
+                f"({ask}: the intervals as build tolerances) or require more force")
 
     def table_text(self) -> str:
         """The verified designs, best first, as a plain text table for the terminal."""
@@ -300,11 +319,12 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     designs = ordered(designs, objective, demoted)
     ok = designs[designs["meets_all"]]
     band = ([] if tolerances is not None or ok.empty else
-            identified_band_N(ok.iloc[0], found.requirements, calibration, found.gap_mm))
+            identified_band_N(ok.iloc[0], found.requirements, calibration, found.gap_mm,
+                              cache_dir))
     # how sure a nominal margin is where no identification says: the braid angle built
     steeper = ([] if tolerances is not None or ok.empty or any(b is not None for b in band)
                else steeper_braid_N(ok.iloc[0], found.requirements, calibration,
-                                    found.gap_mm))
+                                    found.gap_mm, cache_dir))
     n = len(found.requirements)
     columns = DESIGN_COLUMNS + [c for k in range(1, n + 1) for c in (
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
@@ -372,6 +392,13 @@ def held_with(margin_N: float, band_N: float) -> float:
     if band_N <= 0.0:
         return 1.0 if margin_N >= 0.0 else 0.0
     return float(stats.norm.cdf(margin_N * Z95 / band_N))
+
+
+def _chance(probability: float) -> str:
+    """``holds with about 60 %``; ``over 99.9 %`` where rounding would say 100."""
+    if probability >= 0.999:
+        return "holds with over 99.9 %"
+    return f"holds with about {100 * probability:.{0 if probability < 0.99 else 1}f} %"
 
 
 def identified_tolerance(calibration: Calibration | None) -> str:
@@ -480,6 +507,9 @@ def design_record(result: DesignResult) -> dict:
             # the lines the command prints besides its summary (the box, the edge)
             "notes": result.notes(),
             "identified_band_N": result.identified_band_N,
+            # per requirement, the chance the chosen design meets it by that band (null: none)
+            "identified_probability": [result.identified_probability().get(k) for k in
+                                       range(1, len(result.identified_band_N) + 1)],
             "steeper_braid_N": result.steeper_braid_N,
             # the chosen design as the muscle every other command reads (null: none confirmed)
             "chosen_muscle": chosen.record() if (chosen := result.chosen_muscle(

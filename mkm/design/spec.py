@@ -13,6 +13,7 @@ from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.limits import check_value
 from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin
 from mkm.fem.muscle import Muscle
+from mkm.flags import FLAG_OF, unit_of
 
 #: each objective (the first is the default) and how it ranks the designs' table: the columns
 #: sorted by, each ascending or not (ties on the first: the larger margin or the narrower muscle)
@@ -126,11 +127,6 @@ def parse_requirement(text: str, name: str = "--require") -> Requirement:
                        parse_fraction(eps, f"{name} {text!r}: eps"))
 
 
-def unit_of(key: str) -> str:
-    """The unit a constraint's name ends in: ``D0_mm`` -> ``mm``."""
-    return key.rsplit("_", 1)[1]
-
-
 def parse_bounds(text, name: str, unit: str | None = None) -> tuple[float, float]:
     """``(low, high)`` from a value (``"37"``, fixed) or a range ``"30:50"``, above 0 (a size
     or an angle); numbers pass; with ``unit``, a number typed with a unit is converted
@@ -211,17 +207,12 @@ class Constraints:
             object.__setattr__(self, "gap_mm", check_value("gap_mm", self.gap_mm))
 
 
-#: The flag of each option a hint may name (a spec file's key is the same name)
-FLAG_OF = {"D0_mm": "--D0", "t0_mm": "--t0", "L0_mm": "--L0", "theta0_deg": "--theta0",
-           "rubber": "--rubber", "max_outer_diameter_mm": "--max-outer-diameter",
-           "max_pressure_bar": "--max-pressure", "gap_mm": "--gap", "top": "--top"}
-
-
 @dataclass(frozen=True)
 class Hints:
     """How the user set the design's options, so that a hint is in the form they use: a
     ``--spec`` file's keys (``L0_mm = [60, 120] in spec.toml's [constraints]``) for an option
-    the flags did not set over it, else the flag (``--L0 60:120``); and which options the user
+    the flags did not set over it, else the flag (``--L0 60:120``, :data:`mkm.flags.FLAG_OF`:
+    a spec file's key is the option's name); and which options the user
     gave (the spec's or a flag's), whose ends are the user's own bounds.
 
     ``spec``: the spec file's name ("" without); ``flags``: the options a flag set (over the

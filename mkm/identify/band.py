@@ -88,11 +88,13 @@ def identified_tube(calibration) -> tuple[float, float] | None:
     return None if None in tube else (float(tube[0]), float(tube[1]))
 
 
-def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps):
+def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
+                    cache_dir=None):
     """The 95 % half-width [N] of each force ``force_N`` the model of ``spec`` (a
     :class:`mkm.registry.Spec`) predicted with ``calibration`` at the inputs; None where the
     calibration holds no identified muscle of this model, or the spec overrides the identified
-    angle or rubber."""
+    angle or rubber. Its solves are kept in the prediction cache ``cache_dir``
+    (:mod:`mkm.prediction_cache`; None: no cache)."""
     found = identified_entry(calibration) if calibration is not None else None
     if found is None or "band" not in found[1]["identified"]:
         return None
@@ -121,7 +123,7 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps)
         geometry = {g: (moved[g] if g in shift or g in names else inputs[g])
                     for g in fitting.GEOMETRY}
         return _force(spec, calibration, moved, pressure_bar, geometry["D0_mm"],
-                      geometry["t0_mm"], eps)
+                      geometry["t0_mm"], eps, cache_dir)
 
     # the force at the band's own (unrounded) values: the differences are taken from it
     base = force_at({})
@@ -218,9 +220,12 @@ def judge_steps(error, band, noise) -> dict:
             "run_inside": bool((error <= run_reach).all())}
 
 
-def _force(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps):
+def _force(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps, cache_dir=None):
+    from mkm.prediction_cache import cached_predict
+
     C10, C01 = fitting.rubber(values)
     gap = {"gap_mm": values["gap_mm"]} if "gap_mm" in values else {}
     model = spec.with_params(theta0_deg=float(values["theta0_deg"]), C10_MPa=C10,
                              C01_MPa=C01, **gap).build(calibration)
-    return np.asarray(model.predict(pressure_bar, D0_mm, t0_mm, eps).force_N, dtype=float)
+    prediction, _ = cached_predict(model, pressure_bar, D0_mm, t0_mm, eps, cache_dir=cache_dir)
+    return np.asarray(prediction.force_N, dtype=float)

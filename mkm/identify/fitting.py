@@ -354,13 +354,16 @@ def fe_correction(base: StaticSource, fe: ModelStatic, runs, values) -> list[tup
             for k, (grid, F) in enumerate(fe_tables)]
 
 
-def traces(source: StaticSource, runs, values: dict) -> list[np.ndarray]:
+def traces(source: StaticSource, runs, values: dict, lag_s: float = 0.0) -> list[np.ndarray]:
     """The model's force trace [N] at every sample of each run as the load cell reads it: the
     static force at the true pressure (:meth:`mkm.identify.runs.RunData.true_pressure_bar`),
-    with friction and creep, plus the cell's zero where fitted."""
+    with friction and creep, plus the cell's zero where fitted. ``lag_s``: the muscle's
+    pressure trails an imported ramp's by its rate times this (tubing between the monitor and
+    the muscle), on the tables of the pressures as read."""
     tables = source.tables(runs, values)
     zero_N = values.get("force_zero_N", 0.0)
-    return [zero_N + force_history(run.time_s, static_force(run.true_pressure_bar(values),
+    return [zero_N + force_history(run.time_s, static_force(run.true_pressure_bar(values)
+                                                            - lag_s * run.ramp_rate_at_samples(),
                                                             *tables[k]),
                                    values["hysteresis_fraction"], values["creep_fraction"],
                                    math.exp(values["log_tau"]))

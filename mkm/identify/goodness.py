@@ -364,9 +364,11 @@ UNDECLARED = {"L0_mm": "its rest length (--params ...,L0: a first length already
 
 
 #: why a run's steps show no noise, and what gives them one
-NO_NOISE = ("a step table or a ramp has no hold samples to measure its noise from; import it "
-            "with the instruments' accuracy (mkm import --accuracy force=...,pressure=...) to "
-            "judge it")
+NO_NOISE = ("a step table has one value per step, no samples to measure its noise from, and "
+            "a ramp's bins stand for a moving sweep at their mean pressures, which no model "
+            "follows to within their samples' scatter where the sweep turns or the muscle "
+            "starts to pull; import it with the instruments' accuracy (mkm import --accuracy "
+            "force=...,pressure=...) to judge it")
 
 
 def _step_noise(run, steps, scatter2, counts) -> tuple[np.ndarray | None, np.ndarray]:

@@ -110,6 +110,15 @@ FRAME_EPS_STEP = 0.01
 #: a frame is named where fitting its compliance takes away at least this share of the misfit's
 #: chi-square excess over its degrees of freedom (and more than a rest length declared wrong)
 FRAME_TAKES = 0.5
+#: the lag [s] the force's sensitivity to a tubing lag is differenced over (:func:`lag_hint`):
+#: the middle of a bench's 0.2-2 s, over which a ramp's force is near linear in its pressure
+LAG_STEP_S = 0.5
+#: the longest lag searched [s]: a muscle that long behind its monitor has no quasi-static bins
+LAG_MAX_S = 10.0
+#: a tubing lag is named where fitting it lowers the chi-square by at least this: three
+#: standard deviations of one parameter's (the loop it leaves is friction's to a fit that has
+#: no lag, so it may lower a chi-square already within the noise)
+LAG_CHI2 = 9.0
 
 
 def identify(run_dirs, params: str | None = None, model: str = "axisym",
@@ -513,6 +522,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
                      "is cut there")
     notes += terms_at_bounds(runs, best)
+    cautions += [lag] if (lag := lag_hint(source, runs, best, fitness)) else []
     notes += [c["said"] for c in cautions]
     offset = best.values.get("pressure_offset_bar")
     if "pressure_offset_bar" in best.names and fitting.at_edge(
@@ -792,6 +802,69 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
                      "frame or measure its stiffness, or measure the muscle's held length under "
                      "load, and identify again"),
             "shift": {n: float(v) for n, v in zip(best.names, shift, strict=True)}}
+
+
+def lag_hint(source, runs, best, fitness) -> dict | None:
+    """Where imported ramps are judged: whether the force trails the monitored pressure, as a
+    muscle filled through tubing behind the monitor does.
+
+    A first-order lag ``tau`` puts the muscle's pressure at the monitor's less its rate times
+    ``tau``: each bin's static force moves by its slope times that, a column from one trace at
+    :data:`LAG_STEP_S`, fitted with ``tau >= 0`` through a linearised refit of the fit's own
+    parameters (:func:`_refitted`). The loop it leaves between the branches is as wide in
+    pressure at every force, where friction's grows with the force: a fit without the lag
+    takes it for friction, and its chi-square may stay within the noise. Named (an instrument
+    warning: its record, note ``said`` and ``verdict``) where the lag lowers the chi-square by
+    :data:`LAG_CHI2`; else None. A held step has caught up with its tubing: only ramps see a
+    lag."""
+    ramps = [run for run in runs if run.ramp_rate_bar_per_s is not None]
+    if not fitness.judged or not ramps:
+        return None
+    holds = [run.hold >= 0 for run in runs]
+    column = np.concatenate([
+        (m - b)[h] for m, b, h in zip(fitting.traces(source, runs, best.values, LAG_STEP_S),
+                                      fitting.traces(source, runs, best.values), holds,
+                                      strict=True)])
+    if not np.any(column):
+        return None
+
+    def refit_chi2(tau_s: float) -> float:
+        moved = _refitted(best, best.residual_N + tau_s / LAG_STEP_S * column)
+        return goodness.assess(runs, dataclasses.replace(best, residual_N=moved)).chi2
+
+    base = refit_chi2(0.0)
+    tau_s = optimize.minimize_scalar(refit_chi2, bounds=(0.0, LAG_MAX_S), method="bounded",
+                                     options={"xatol": 1e-4}).x
+    with_lag = refit_chi2(tau_s)
+    lowered = base - with_lag
+    if not (tau_s > 0 and lowered >= LAG_CHI2):
+        return None
+    rate = max(float(np.max(np.abs(run.ramp_rate_bar_per_s))) for run in ramps)
+    friction, record = "", {}
+    if "hysteresis_fraction" in best.names:
+        step = _step(best, best.residual_N + tau_s / LAG_STEP_S * column)
+        fitted = best.values["hysteresis_fraction"]
+        with_it = max(fitted + float(step[best.names.index("hysteresis_fraction")]), 0.0)
+        friction = (f"; the fitted friction, {fitted:.3g}, is {with_it:.3g} with the lag: "
+                    "the rest of its loop is the lag's, not the braid's")
+        record["hysteresis_fraction_with_lag"] = float(f"{with_it:.3g}")
+    advice = ("ramp slower, read the pressure at the muscle, or hold the steps, and identify "
+              "again")
+    return {"what": "lag between monitor and muscle",
+            "tau_s": float(f"{tau_s:.3g}"), "trail_bar": float(f"{tau_s * rate:.3g}"),
+            "fastest_ramp_bar_per_s": float(f"{rate:.3g}"),
+            "chi2_lowered": round(float(lowered), 3),
+            "chi2_per_nu": round(float(with_lag / fitness.nu), 3), **record,
+            "said": (f"lag: the force trails the pressure by about {tau_s:.2g} s "
+                     f"({tau_s * rate:.2g} bar on the fastest ramp, {rate:.2g} bar/s): a lag "
+                     "between the monitor and "
+                     "the muscle (tubing, a monitor at the regulator), whose loop between the "
+                     "branches is not friction: fitting it (linearised) lowers chi2 by "
+                     f"{lowered:.3g} (chi2/nu {with_lag / fitness.nu:.3g}){friction}; "
+                     f"{advice}"),
+            "verdict": (f"the force trails the pressure by about {tau_s:.2g} s, a lag between "
+                        f"the monitor and the muscle, not friction (the note above): {advice}"),
+            "ready_if": "for the braid angle and rubber (not the friction)"}
 
 
 def _rms(r) -> float:

@@ -447,7 +447,8 @@ class Identification:
                     f"{g.reduced:.3g}): {ready}")
         return (f"verdict: a misfit (chi2/nu {g.reduced:.3g}): the intervals are widened x"
                 f"{g.birge_ratio:.3g} and the estimates may be biased; "
-                f"{_first(self.rubber, g, self.groups)}the notes above name what the runs show "
+                f"{_first(self.rubber, g, self.groups, self.instrument_warnings)}the notes "
+                "above name what the runs show "
                 "that the fit "
                 "lacks: act on them before using calibration.json")
 
@@ -587,13 +588,18 @@ def _box_cut(rubber: dict) -> str:
             + " and ".join(f"{r:.3g}" for r in cut) if cut else "")
 
 
-def _first(rubber: dict, goodness, groups) -> str:
+def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     """What a misfit's verdict says first: a run declared at its rest length that pulls later
     than the fitted model (a rest length or a gap the runs do not declare: a misfit so large
     that the braid or the rubber's ratio, which barely move the threshold, are read from it
     too: :func:`pulls_late_first`, ``groups`` what was fitted), else :func:`ratio_first`; a
     frame yielding under the muscle's pull before both where it explains the misfit
-    (:func:`mkm.identify.procedure.frame_hint`)."""
+    (:func:`mkm.identify.procedure.frame_hint`); a lag between the monitor and the muscle
+    before all (``cautions``' :func:`mkm.identify.procedure.lag_hint`): a fit with friction for
+    the lag's loop."""
+    lag = [c["verdict"] for c in cautions if c["what"] == "lag between monitor and muscle"]
+    if lag:
+        return f"first, {lag[0]}; then "
     if goodness.frame:
         return (f"first, a frame yielding under the muscle's pull (about "
                 f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above) may be what "

@@ -63,6 +63,7 @@ class RunData:
     sha256: dict
     tare_se_N: float = 0.0
     timed: bool = True  # the holds have their real durations (creep can be fitted)
+    binned: bool = False  # an imported ramp: its steps are bins of a continuous sweep
     #: an imported run whose lab declared its accuracy (``mkm import --accuracy``): its steps'
     #: budgets stand for the noise a table's single values cannot show
     declared: bool = False
@@ -91,6 +92,9 @@ class RunData:
     #: the tube's declared +- tolerances [mm] (``D0_mm``, ``t0_mm``: run.json's
     #: ``calibration.muscle_tolerances``, :class:`mkm.fem.tolerances.Tolerances` where none)
     geometry_tolerance_mm: dict = field(default_factory=lambda: _tube_tolerances(None))
+    #: an imported ramp's pressure rate [bar/s] over each step's bin (its samples' slope, as
+    #: the monitor read them); None for a run of held steps
+    ramp_rate_bar_per_s: np.ndarray | None = None
     #: what identify notes of the run's record ("" when nothing): a run whose steps were all
     #: done and whose end-of-run vent alone was not verified (:func:`unverified_vent`)
     note: str = ""
@@ -138,7 +142,8 @@ class RunData:
         if self.timed or not self.declared or not np.isfinite(force_u).all():
             return None
         pressure_u = np.nan_to_num(self.steps["pressure_u_bar"].to_numpy(dtype=float))
-        return np.sqrt(force_u**2 + (step_slopes(self.steps) * pressure_u) ** 2)
+        slopes = branch_slopes(self.steps) if self.binned else step_slopes(self.steps)
+        return np.sqrt(force_u**2 + (slopes * pressure_u) ** 2)
 
     def branch_sign(self) -> np.ndarray:
         """Per sample: +1 in the hold of a rising step, -1 of a falling one, 0 elsewhere (the
@@ -146,6 +151,13 @@ class RunData:
         rising = (self.steps["direction"] == "up").to_numpy()
         sign = np.where(rising, 1.0, -1.0)[np.maximum(self.hold, 0)]
         return np.where(self.hold >= 0, sign, 0.0)
+
+    def ramp_rate_at_samples(self) -> np.ndarray | float:
+        """Per sample: its ramp bin's pressure rate [bar/s] (0 outside the bins), or 0 for a
+        run of held steps."""
+        if self.ramp_rate_bar_per_s is None:
+            return 0.0
+        return np.where(self.hold >= 0, self.ramp_rate_bar_per_s[np.maximum(self.hold, 0)], 0.0)
 
     def step_means(self, force_N: np.ndarray) -> np.ndarray:
         """The mean of a force trace over each settled step's hold [N]."""
@@ -161,6 +173,25 @@ def shown_effects(runs) -> tuple[str, ...]:
     (:attr:`RunData.timed`)."""
     return ((("friction",) if any({"up", "down"} <= set(r.steps["direction"]) for r in runs)
              else ()) + (("creep",) if any(r.timed for r in runs) else ()))
+
+
+def branch_slopes(steps: pd.DataFrame) -> np.ndarray:
+    """dF/dP [N/bar] at each of a ramp's bins, along its own branch (each stretch of one
+    direction): a rising and a falling bin lie at pressures a few mbar apart, and
+    :func:`step_slopes` taken across the two would divide their friction's difference by
+    that."""
+    P = steps["pressure_bar_mean"].to_numpy(dtype=float)
+    F = steps["force_N_mean"].to_numpy(dtype=float)
+    direction = steps["direction"].to_numpy()
+    branch = np.r_[0, np.cumsum(direction[1:] != direction[:-1])]
+    slopes = np.zeros(P.size)
+    for b in np.unique(branch):
+        here = np.flatnonzero(branch == b)
+        if here.size < 2:
+            continue
+        order = here[np.argsort(P[here], kind="stable")]
+        slopes[order] = np.gradient(F[order], P[order])
+    return slopes
 
 
 def step_slopes(steps: pd.DataFrame) -> np.ndarray:
@@ -247,13 +278,19 @@ def load_run_data(path) -> RunData:
     settled = settled.reset_index(drop=True).assign(
         hold_start_s=lambda s: s["start_s"] + s["settle_s"])
     pressure_se = np.full(len(settled), np.nan)
+    is_ramp = imported.get("shape") == "ramp"
+    rate = np.zeros(len(settled))
     for k, step in settled.iterrows():
         inside = (time_s >= step["hold_start_s"] - 1e-9) & (time_s <= step["end_s"] + 1e-9)
         hold[inside] = k
         if inside.sum() > 1:  # the monitor's noise in the hold mean (goodness of fit uses it)
             pressure_se[k] = np.std(pressure[inside], ddof=1) / np.sqrt(inside.sum())
+            if is_ramp and np.ptp(time_s[inside]) > 0:
+                rate[k] = np.polyfit(time_s[inside], pressure[inside], 1)[0]
         pressure[inside] = step["pressure_bar_mean"]
     settled["pressure_se_bar"] = pressure_se
+    if is_ramp:
+        _with_turns(pressure, samples["pressure_bar"].to_numpy(dtype=float), hold, settled)
     # the ramp into a hold does not overshoot it (first-order regulator): clip its noise too
     in_step = samples["step"].to_numpy()
     for _, step in settled.iterrows():
@@ -270,8 +307,23 @@ def load_run_data(path) -> RunData:
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
-                   timed=imported.get("shape") != "ramp",
+                   timed=not is_ramp, binned=is_ramp,
+                   ramp_rate_bar_per_s=rate if is_ramp else None,
                    vented_bar=_vented(run), note=note, **_instrument(run))
+
+
+def _with_turns(pressure: np.ndarray, read: np.ndarray, hold: np.ndarray,
+                settled: pd.DataFrame) -> None:
+    """A ramp's bins, each at its mean pressure, with the pressure it turned at: where the
+    sweep turns, the sample of the highest (lowest) reading of the two bins about the turn
+    takes that reading, so that the friction model turns there and not at the bins' means,
+    below the turn (in place)."""
+    direction = settled["direction"].to_numpy()
+    for k in np.flatnonzero(direction[1:] != direction[:-1]):
+        around = np.flatnonzero((hold == k) | (hold == k + 1))
+        pick = np.argmax if direction[k] == "up" else np.argmin
+        j = around[pick(read[around])]
+        pressure[j] = read[j]
 
 
 def unverified_vent(run, name: str) -> str:

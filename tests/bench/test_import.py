@@ -1855,10 +1855,11 @@ def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     assert "creep not fitted: no run has timed holds" in out
     values = {row["parameter"]: row["value"] for row in json.loads(
         (tmp_path / "id" / "identification.json").read_text())["parameters"]}
-    # 2300 samples of 0.3 N noise over ~600 N of force: the angle within 0.2 deg, the friction
-    # band within 0.5 % of the force
-    assert values["theta0_deg"] == pytest.approx(THETA0, abs=0.2)
-    assert values["hysteresis_fraction"] == pytest.approx(0.05, abs=0.005)
+    # 2300 samples of 0.3 N noise over ~600 N of force, its bins fitted with the pressure the
+    # sweep turned at: three noise draws (seeds 1-3) give 31.999-32.003 deg and a band of
+    # 0.0505-0.0507 (at the bins' mean pressures alone, below the turn: 31.967 deg, 0.0466)
+    assert values["theta0_deg"] == pytest.approx(THETA0, abs=0.015)
+    assert values["hysteresis_fraction"] == pytest.approx(0.05, abs=0.0015)
 
 
 def _staircase(levels, seed):
@@ -2970,3 +2971,209 @@ def test_files_that_are_not_one_run_are_refused(case, message, tmp_path, mkm_cli
     assert code == 2 and out == "" and err.count("\n") == 1, err
     assert message in err
     assert not (tmp_path / "runs").exists()
+
+
+@pytest.mark.parametrize("column, value, message", [
+    ("Pressure [kPa]", -150.0, "step4.csv, cell D9 (column 'Pressure [kPa]'): -1.5 bar is "
+     "below 0"),
+    ("Force [N]", 2e6, "step4.csv, cell B9 (column 'Force [N]'): 2e+06 N is beyond the largest "
+     "load cell a bench takes"),
+])
+def test_a_bad_cell_of_several_files_is_named_in_its_own_file(column, value, message,
+                                                              tmp_path, mkm_cli):
+    # found after the files are joined, the cell was named in the first file's name
+    # ("step0.csv and 10 more, cell D9"): its own file and line, the sixth row under the two
+    # comment lines and the header
+    files, _, _ = _files_per_step(tmp_path / "LM8")
+    frame = pd.read_csv(files[4], comment="#")
+    frame.loc[5, column] = value
+    files[4].write_text("# a\n# b\n" + frame.to_csv(index=False))
+    code, out, err = mkm_cli(["import", str(tmp_path / "LM8" / "step*.csv"), *MUSCLE, "--eps",
+                              "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"mkm import: error: {message}" in err
+
+
+@pytest.mark.parametrize("first, later, message", [
+    ("# held length L = 135 mm", "# held length L = 120 mm",
+     "step6.csv: its header declares 'L = 120 mm' (line 1), step0.csv's 'L = 135 mm' (line 1): "
+     "two muscle states, which one run cannot hold: expected the files of one muscle at one "
+     "length; import each state's files as a run of its own, with its --eps"),
+    ("# eps: 10 %", "# eps: 20 %",
+     "step6.csv: its header declares 'eps: 20 %' (line 1), step0.csv's 'eps: 10 %' (line 1)"),
+    ("# muscle: LM-8", "# muscle: LM-9",
+     "step6.csv: its header declares 'muscle: LM-9' (line 1), step0.csv's 'muscle: LM-8' "
+     "(line 1): two muscle states, which one run cannot hold: expected the files of one muscle "
+     "at one length; import each muscle's files as a run of its own, with its --id"),
+])
+def test_files_whose_headers_declare_two_states_are_refused(first, later, message, tmp_path,
+                                                             mkm_cli):
+    # two held lengths (or muscles) said only in a comment line, no column telling them
+    # apart: the files were joined into one run as if of one length
+    files, _, _ = _files_per_step(tmp_path / "LM8")
+    for k, path in enumerate(files):
+        # in place of the first comment line, which names the muscle
+        lines = path.read_text().splitlines(keepends=True)
+        path.write_text((first if k < 6 else later) + "\n" + "".join(lines[1:]))
+    code, out, err = mkm_cli(["import", str(tmp_path / "LM8" / "step*.csv"), *MUSCLE, "--eps",
+                              "0", "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"mkm import: error: {message}" in err
+    assert not (tmp_path / "runs").exists()
+
+
+def test_files_whose_headers_declare_one_state_are_joined(tmp_path, mkm_cli):
+    # the same length in every header, and a set pressure that differs from file to file (a
+    # file per step says its own): one run
+    files, _, _ = _files_per_step(tmp_path / "LM8")
+    for path in files:
+        lines = path.read_text().splitlines(keepends=True)
+        path.write_text(lines[0] + "# L0 = 282 mm, L = 282.0 mm\n" + "".join(lines[1:]))
+    (run,), err = _import(mkm_cli, tmp_path / "LM8" / "step*.csv", *MUSCLE, "--eps", "0")
+    assert len(run.meta.imported_from["files"]) == len(files)
+
+
+def _pre_conditioned(top_hold_s: float, step_holds_s: list[float], seed: int = 5):
+    """A 10 Hz record at eps 0 as a bench pre-conditions its muscle: 5 s vented, a cycle to
+    2.5 bar held ``top_hold_s`` and vented for 3 s, then a staircase 0.5-2.5-0.5 bar, each
+    level reached in 1 s and held as ``step_holds_s`` says; friction 3 %, creep 5 % (tau
+    5 s), noise 0.003 bar and 0.2 N."""
+    rng = np.random.default_rng(seed)
+    knots_t, knots_p = [0.0, 5.0, 6.0, 6.0 + top_hold_s, 7.0 + top_hold_s, 10.0 + top_hold_s], \
+        [0.0, 0.0, 2.5, 2.5, 0.0, 0.0]
+    for level, hold_s in zip([0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.5, 1.0, 0.5, 0.0], step_holds_s,
+                             strict=True):
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 1.0 + hold_s]
+        knots_p += [level, level]
+    t = np.arange(0.0, knots_t[-1], 0.1)
+    p = np.interp(t, knots_t, knots_p)
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.03, 0.05, 5.0)
+    return pd.DataFrame({"time": t, "P": p + rng.normal(0, 0.003, t.size),
+                         "F": truth + rng.normal(0, 0.2, t.size)})
+
+
+@pytest.mark.parametrize("case", ["pre-conditioning", "short step"])
+def test_a_step_that_did_not_settle_is_said_with_what_to_do(case, tmp_path, mkm_cli):
+    # a pre-conditioning cycle's 2.2 s top hold became an unsettled step that identify left out
+    # without a word; so would a step of the measurement held too short to settle
+    holds = [12.0] * 10
+    if case == "short step":
+        holds[2] = 2.2  # 1.5 bar, rising
+    path = tmp_path / "pc.csv"
+    _pre_conditioned(2.2 if case == "pre-conditioning" else 12.0, holds).to_csv(path,
+                                                                                 index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    unsettled = run.steps[~run.steps["settled"].astype(bool)]
+    said = ("step(s) did not settle (the bench's settle test), kept in steps.csv with settled "
+            "= false and left out by mkm identify, which fits settled holds alone: ")
+    top = ("step 0 at 2.5 bar, held {} s before the record vents and its staircase starts: a "
+           "pre-conditioning cycle's top, not a step of the measurement: nothing to do")
+    if case == "pre-conditioning":
+        assert unsettled["step"].tolist() == [0]
+        assert "1 " + said + top.format("2.2") in err
+    else:
+        # the 12 s top still creeps (5 % of 1 kN, tau 5 s: 0.9 N/s at its end) and settles no
+        # more; the staircase's third level is step 3
+        assert unsettled["step"].tolist() == [0, 3]
+        assert "2 " + said + top.format("12") + (
+            "; step 3 at 1.5 bar, held 2.2 s: its force did not settle within the hold; to fit "
+            "it, hold each step longer than the bench's settle.min_dwell_s (4 s) and until the "
+            "force is steady") in err
+
+
+def _identified_ramp(tmp_path, mkm_cli, *accuracy):
+    """The ramp of :func:`_ramp` imported (with ``accuracy``), identified (angle and
+    friction): the run, the identification and what identify printed."""
+    frame, _, _ = _ramp()
+    frame.to_csv(tmp_path / "ramp.csv", index=False)
+    (run,), _ = _import(mkm_cli, tmp_path / "ramp.csv", *MUSCLE, "--eps", "12.2%", *accuracy)
+    code, out, err = mkm_cli(["identify", str(run.path), "--model", "thickwall", "--search",
+                              "model", "--params", "theta0,friction", "--out",
+                              str(tmp_path / "id"), "--workers", "1"])
+    assert code == 0, err
+    return run, json.loads((tmp_path / "id" / "identification.json").read_text()), out
+
+
+def test_a_ramps_declared_noise_is_its_accuracy_along_its_branches(tmp_path, mkm_cli):
+    # a rising and a falling bin lie a few mbar apart: the slope taken across them (the
+    # friction's difference over that) put 30 N of noise on a ramp declared to 0.5 N + 0.5 %
+    # and 0.02 bar, a fit that could not fail
+    run, identified, _ = _identified_ramp(tmp_path, mkm_cli,
+                                          "--accuracy", "force=0.5N+0.5%,pressure=0.02bar")
+    steps = run.steps
+    p = steps["pressure_bar_mean"].to_numpy()
+    grid = np.linspace(0.0, 2.6, 2601)
+    static_slope = np.interp(p, grid, np.gradient(thickwall_N(grid, 0.122), grid))
+    # the friction band (5 %): a rising branch reads the static force less 5 %, a falling one
+    # more (mkm.fem.friction)
+    slope = static_slope * np.where(steps["direction"] == "up", 0.95, 1.05)
+    force_u = (0.5 + 0.005 * np.abs(steps["force_N_mean"].to_numpy())) / np.sqrt(3)
+    expected = np.hypot(force_u, slope * 0.02 / np.sqrt(3))
+    for branch in identified["goodness_of_fit"]["branches"]:
+        rising = (steps["direction"] == ("up" if branch["branch"] == "loading" else "down"))
+        # 2.50 and 2.60 N against 2.62 and 2.88 N: the measured bins' slope against the
+        # model's, lower where the falling branch, held in its friction band as the sweep
+        # turns, and the threshold's kink pull less than the static slope
+        assert branch["rms_noise_N"] == pytest.approx(
+            np.sqrt(np.mean(expected[rising.to_numpy()] ** 2)), rel=0.15)
+    assert identified["goodness_of_fit"]["judged"]
+
+
+def test_a_ramp_without_a_declared_accuracy_is_not_judged_and_says_why(tmp_path, mkm_cli):
+    # its samples' scatter about each bin's line in time is no noise to judge it by: the
+    # model's own ramp (no creep, its friction fitted) misses its bins by more than that
+    run, identified, out = _identified_ramp(tmp_path, mkm_cli)
+    assert ("goodness of fit: not judged (a step table has one value per step, no samples to "
+            "measure its noise from, and a ramp's bins stand for a moving sweep at their mean "
+            "pressures, which no model follows to within their samples' scatter where the "
+            "sweep turns or the muscle starts to pull; import it with the instruments' "
+            "accuracy (mkm import --accuracy force=...,pressure=...) to judge it)") in out
+    samples, steps = run.samples, run.steps
+    fitted = pd.read_csv(tmp_path / "id" / "steps.csv")
+    noise = []
+    for step in steps.itertuples():
+        bin_ = samples[samples["step"] == step.step]
+        t = bin_["time_s"].to_numpy() - bin_["time_s"].iloc[0]
+        se = [np.std(y - np.polyval(np.polyfit(t, y, 1), t), ddof=2) / np.sqrt(t.size)
+              for y in (bin_["force_N"].to_numpy(), bin_["pressure_bar"].to_numpy())]
+        noise.append((se[0], se[1]))
+    force_se, pressure_se = np.array(noise).T
+    residual = (fitted["identified_N"] - fitted["force_N_mean"]).to_numpy()
+    slope = np.zeros(residual.size)
+    for direction in ("up", "down"):  # along each branch, its pressures in order
+        here = np.flatnonzero(fitted["direction"] == direction)
+        slope[here] = np.gradient(fitted["identified_N"].to_numpy()[here],
+                                  fitted["pressure_bar_mean"].to_numpy()[here])
+    chi2_per_nu = np.mean(residual**2 / (force_se**2 + (slope * pressure_se) ** 2))
+    # 40 bins judged so: chi2/nu 7.6, where chance puts it beyond 3 once in 10^9
+    assert chi2_per_nu > 3
+
+
+@pytest.mark.parametrize("factor", [0.7, 1.0])
+def test_files_of_two_states_without_a_word_of_it_are_said(factor, tmp_path, mkm_cli):
+    # a second staircase's files at 0.7 of the first's forces (another held length), nothing
+    # in their columns or comments to say so: joined as one run with no word of it. The same
+    # muscle's second cycle (1.0) says nothing, nor its slack steps, at 0.5 bar (made so:
+    # the load cell's 0.2 N of noise about 0.1 N, then 0.3 N, its zero drifted: 67 % apart)
+    files, _, _ = _files_per_step(tmp_path / "LM8")
+    rng = np.random.default_rng(9)
+    for k, path in enumerate(files):
+        frame = pd.read_csv(path, comment="#")
+        if factor == 1.0 and STEP_FILE_LEVELS[k] == 0.5:
+            again = path.with_name(f"step{k + len(files)}.csv")
+            for zero_N, written in ((0.1, path), (0.3, again)):
+                frame["Force [N]"] = np.round(zero_N + rng.normal(0, 0.2, len(frame)), 3)
+                frame.to_csv(written, index=False)
+            continue
+        frame["Force [N]"] = np.round(frame["Force [N]"] * factor, 3)
+        frame.to_csv(path.with_name(f"step{k + len(files)}.csv"), index=False)
+    (run,), err = _import(mkm_cli, tmp_path / "LM8" / "step*.csv", *MUSCLE, "--eps", "0")
+    assert len(run.meta.imported_from["files"]) == 2 * len(files)
+    said = "apart, where a muscle's cycles repeat far closer"
+    if factor == 1.0:
+        assert said not in err
+        return
+    # each pair 30 % apart to the forces' rounding: the one named is the furthest
+    assert ("rising at 2.5 bar, step5.csv reads 967.6 N and step16.csv 677.4 N, 30 % " + said
+            + ": if the files hold two lengths or two muscles, import each one's files as a run "
+            "of its own, with its --eps (or --id)") in err

@@ -87,7 +87,7 @@ def test_the_truth_is_recorded_in_the_simulator_settings(config, tmp_path):
                             "monitor_gain": None, "monitor_offset_bar": None,
                             "monitor_bow_bar": None,
                             "monitor_hysteresis_bar": None, "monitor_stuck_bar": None,
-                            "frame_stiffness_N_per_mm": None}
+                            "frame_stiffness_N_per_mm": None, "line_tau_s": None}
     assert sim["physics"]["instruments"]["monitor_stuck_bar"] is None  # a monitor that reads
     assert sim["physics"]["force_model_params"]["theta0_deg"] == 31.5
     assert "[sim.truth]\ntheta0_deg = 31.5" in (result.path / "config.toml").read_text("utf-8")
@@ -424,3 +424,32 @@ def test_a_frame_that_yields_holds_the_muscle_where_its_pull_leaves_it(config):
     with pytest.raises(ValueError, match=r"^sim.truth.frame_stiffness_N_per_mm=0 is invalid: "
                                          r"expected 1 to 1e\+07 N/mm$"):
         config.replace(sim={"truth": {"frame_stiffness_N_per_mm": 0.0}})
+
+
+def test_tubing_lags_the_muscle_behind_the_monitored_pressure_on_a_ramp(config):
+    """Tubing of 1 s between the regulator's outlet and the muscle, the command ramped at 0.1
+    bar/s: a first-order lag trails a ramp by its rate times its time constant, so from a few
+    time constants on the muscle pulls the thick-wall force at 0.1 bar below what the monitor
+    reads (within the table's interpolation and one ADC step, 0.35 N), some 30 N less than at
+    the monitored pressure. Held, the muscle catches up: the force is the monitor's."""
+    c = quiet(config, model="thickwall", truth={"line_tau_s": 1.0})
+    pressure, force = static_force_table(c)
+    bench = SimMuscleBench(c)
+    rate_bar_per_s, rows = 0.1, []
+    for k in range(250):  # 25 s at 10 Hz: up to 2.5 bar
+        bench.set_command_volts(c.regulator.command_volts(rate_bar_per_s * k * bench.dt))
+        cell_V, monitor_V = bench.step()
+        rows.append((float(c.regulator.monitor_bar(monitor_V)),
+                     cell_V * c.loadcell.sensitivity_N_per_V))
+    monitored, read = np.array(rows[150:]).T  # from 15 s (1.5 bar) on
+    trailing = np.interp(monitored - rate_bar_per_s * 1.0, pressure, force)
+    np.testing.assert_allclose(read, trailing, atol=0.35)
+    assert np.min(np.interp(monitored, pressure, force) - read) > 25.0
+    for _ in range(100):  # held 10 s at the last command
+        cell_V, monitor_V = bench.step()
+    held = np.interp(float(c.regulator.monitor_bar(monitor_V)), pressure, force)
+    assert cell_V * c.loadcell.sensitivity_N_per_V == pytest.approx(held, abs=0.35)
+    assert "line_tau_s 1" in describe_physics(c)["summary"]
+    with pytest.raises(ValueError, match=r"^sim.truth.line_tau_s=-0.5 is invalid: "
+                                         r"expected 0 to 60 s$"):
+        config.replace(sim={"truth": {"line_tau_s": -0.5}})

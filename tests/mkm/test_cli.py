@@ -1238,6 +1238,40 @@ def test_design_box_options_typed_with_units_are_converted():
     assert args.L0_mm == (282.0, 282.0) and args.theta0_deg == (30.0, 30.0)
 
 
+def test_every_option_a_design_hint_names_is_the_flag_mkm_design_takes():
+    """design's hints (mkm.design.spec's FLAG_OF) and the command line's messages (mkm.cli's
+    FLAGS) each kept a table of the flag of an option, and mkm design declared its flags a
+    third time: one table, mkm.flags.FLAG_OF, that mkm design declares its options by, so a
+    hint names a flag the command takes and keeps the value under the option's name."""
+    from dataclasses import fields
+
+    from mkm.cli import build_parser
+    from mkm.design.spec import Constraints, Hints
+    from mkm.flags import FLAG_OF
+
+    sub = dict(_subcommands(build_parser()))[("design",)]
+    dest_of = {flag: a.dest for a in sub._actions for flag in a.option_strings}
+    options = [f.name for f in fields(Constraints)] + ["top", "tolerance"]
+    assert {key: dest_of.get(FLAG_OF[key]) for key in options} == {k: k for k in options}
+    assert Hints().option("max_outer_diameter_mm", "64") == "--max-outer-diameter 64"
+    assert Hints("spec.toml").option("L0_mm", "60:120") == (
+        "L0_mm = [60, 120] in spec.toml's [constraints]")
+
+
+def test_a_design_option_the_library_refuses_is_named_by_its_flag(mkm_run, tmp_path):
+    # 'top=0 is invalid', the library's name, where the user typed --top 0; a spec file's
+    # value keeps the spec's name
+    argv = ["design", "--require", "300N@2.5bar,eps=0.1", "--out", str(tmp_path / "d")]
+    code, out, err = mkm_run([*argv, "--top", "0"])
+    assert (code, out) == (2, "")
+    assert err == "mkm design: error: --top 0: expected a whole number of designs >= 1\n"
+    spec = tmp_path / "spec.toml"
+    spec.write_text("top = 0\n", encoding="utf-8")
+    code, _, err = mkm_run([*argv, "--spec", str(spec)])
+    assert (code, err) == (2, "mkm design: error: top=0 is invalid: expected a whole number "
+                              "of designs >= 1\n")
+
+
 @pytest.mark.parametrize("argv", [["models", "axisym"], ["design", "--foo"],
                                   ["fem", "solve", "--D0", "35", "--t0", "2", "--eps", "0",
                                    "extra"]])
