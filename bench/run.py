@@ -56,6 +56,7 @@ import queue
 import sys
 import threading
 import time
+from contextlib import ExitStack
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -68,7 +69,7 @@ from mkm.bench.ownership import BenchOwner, StateFolderBroken
 from mkm.bench.preflight import braid_lock, warnings
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
-from mkm.bench.signals import StopSignal, StopSignals
+from mkm.bench.signals import StopSignal, StopSignals, fatal_trace
 from mkm.bench.storage import CommandRecord, RunStatus
 from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
 from mkm.bench.vent import (
@@ -567,6 +568,7 @@ class BenchRun:
         self.handle_signals = handle_signals
         self.command = command
         self.signals = StopSignals()
+        self._fatal = ExitStack()  # the fatal-error trace into the run folder (fatal_trace)
         self.steps = plan_steps(config)
         self.recorder: Recorder | None = None
         self.acquisition: Acquisition | None = None
@@ -712,6 +714,7 @@ class BenchRun:
             status, reason = self.shutdown(status, reason, signal_name, signal_number,
                                            say_vent)
         finally:
+            self._fatal.close()
             self.signals.done()
         if signal_number is not None:
             exit_code = 128 + signal_number
@@ -781,6 +784,7 @@ class BenchRun:
             except OSError as exc:
                 self._folder_error = exc
                 raise
+        self._fatal.enter_context(fatal_trace(self.recorder.path))
         # the lease is kept from here on: a stop while its first write is waited for still
         # removes the marker at the shutdown
         lease = self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),

@@ -590,3 +590,69 @@ def test_a_signal_handler_writes_nothing_the_loop_says_its_notice(config, tmp_pa
     notice = FIRST_INTERRUPT if name == "SIGINT" else SUSPEND_REFUSED
     assert said.count(notice) == 1
     assert result.status == ("aborted" if name == "SIGINT" else "complete"), result.reason
+
+
+FAULTING_RUN = """
+import signal, sys
+from mkm.bench.config import load_config
+from mkm.bench.run import BenchRun
+from mkm.bench.sim import SimBackend
+
+config = load_config(sys.argv[1])
+backend = SimBackend(config)
+read = backend.read
+
+def read_then_fault(n, timeout):
+    block = read(n, timeout)
+    if block.first_index >= 20 and any(b > 0 for _, b in backend.commands):  # pressurised
+        signal.raise_signal(getattr(signal, sys.argv[2]))  # as a fault in a driver raises it
+    return block
+
+backend.read = read_then_fault
+BenchRun(config, backend, sys.argv[3], notify=lambda m: None).execute()
+"""
+
+
+@pytest.mark.slow  # starts a process that a fatal signal ends
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX fatal signals")
+@pytest.mark.parametrize("name, words", [("SIGSEGV", "Segmentation fault"),
+                                         ("SIGBUS", "Bus error"),
+                                         ("SIGFPE", "Floating point exception"),
+                                         ("SIGILL", "Illegal instruction")])
+def test_a_fatal_signal_leaves_its_trace_in_the_run_folder_and_the_next_command_says_so(
+        tmp_path, capsys, name, words):
+    # a fault in a driver or an extension (SIGSEGV, SIGBUS, SIGFPE, SIGILL) ends the process
+    # with the regulator holding its pressure; the next command vented and called the run
+    # killed, with nothing to say why: no trace was written anywhere
+    config = write_config(tmp_path)
+    proc = subprocess.run([sys.executable, "-c", FAULTING_RUN, str(config), name,
+                           str(tmp_path / "runs")], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == -getattr(signal, name), proc.stderr
+    (folder,) = (tmp_path / "runs").iterdir()
+    trace = (folder / "fatal-error.txt").read_text()
+    assert trace.startswith(f"Fatal Python error: {words}\n"), trace
+    assert "in read_then_fault" in trace  # the Python stack where it failed, every thread's
+    assert main(["vent", "--config", str(config)]) == 0
+    err = capsys.readouterr().err
+    assert "ended without venting; its last commanded pressure was 0.5 bar" in err
+    said = (f"its process died of a fatal error ({words}, {name}): the trace of its threads "
+            f"is in {folder / 'fatal-error.txt'}")
+    assert said in err, err
+    run = load_run(folder)
+    assert run.status == "killed", run.reason
+    pid = run.meta.process.pid
+    assert run.reason.startswith(f"its process (pid {pid}) died of a fatal error "
+                                 f"({words}, {name}), at about "), run.reason
+    assert run.reason.endswith(f"; the trace of its threads is in {folder / 'fatal-error.txt'}")
+
+
+def test_a_run_that_ends_leaves_no_fatal_trace_and_gives_faulthandler_back(config, tmp_path):
+    import faulthandler
+
+    from mkm.bench.run import acquire
+
+    enabled = faulthandler.is_enabled()
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "complete", result.reason
+    assert not (result.path / "fatal-error.txt").exists()
+    assert faulthandler.is_enabled() == enabled
