@@ -66,7 +66,7 @@ from mkm.bench.bounded import call_within
 from mkm.bench.config import MONITOR_FAULT, BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
-from mkm.bench.preflight import braid_lock, warnings
+from mkm.bench.preflight import ForceCeiling, braid_lock, warnings
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals, fatal_trace
@@ -553,7 +553,8 @@ class BenchRun:
 
     def __init__(self, config: BenchConfig, backend: Backend, out_root: str | Path,
                  operator: Operator | None = None, progress: bool = False, plot: bool = False,
-                 handle_signals: bool = True, notify=None, command: str = "acquire"):
+                 handle_signals: bool = True, notify=None, command: str = "acquire",
+                 ceiling: ForceCeiling | None = None):
         if not config.regulator.electronic and operator is None:
             raise ValueError("regulator.kind='manual' needs an operator to set the pressure")
         self.config = config
@@ -567,6 +568,7 @@ class BenchRun:
         self._console: _Console | None = None
         self.handle_signals = handle_signals
         self.command = command
+        self.ceiling = ceiling  # the identified muscle's most: the over-force interlock's bound
         self.signals = StopSignals()
         self._fatal = ExitStack()  # the fatal-error trace into the run folder (fatal_trace)
         self.steps = plan_steps(config)
@@ -809,7 +811,7 @@ class BenchRun:
         self.acquisition = Acquisition(
             self.config, self.backend, self.recorder, stop_requested=self._pending_stop,
             stop_time=self._stop_time, lease=self.lease, observers=self._observers,
-            guard=self.signals.deferred)
+            guard=self.signals.deferred, ceiling=self.ceiling)
         self.acquisition.command(0.0, "vent")
         # no watchdog yet: bounded as `mkm vent`'s start of the inputs (the AO write's timeout
         # and the margin, as a command write)
@@ -1242,14 +1244,16 @@ def with_backend(config: BenchConfig, backend: str | None) -> BenchConfig:
 def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
             out_root: str | Path = "data/experimental", progress: bool = False,
             plot: bool = False, notify=None, allow_past_lock: bool = False,
-            command: str = "acquire") -> RunResult:
+            command: str = "acquire", ceiling: ForceCeiling | None = None) -> RunResult:
     """Record one run of ``config`` under ``out_root``.
 
     ``backend`` overrides ``config.daq.backend``. A muscle held past its braid lock is refused
     (``ValueError``) unless ``allow_past_lock``; a load cell the wrong size for the muscle, or
     a muscle outside the practical range, is said (:func:`mkm.bench.preflight.warnings`).
     ``notify`` receives the operator's lines (default: stderr, ``mkm <command>: ...``, with
-    ``command`` the command the user ran).
+    ``command`` the command the user ran). ``ceiling``: the most the muscle ``mkm identify``
+    identified pulls (:func:`mkm.identify.band.force_ceiling`), which arms the over-force
+    interlock (:meth:`mkm.bench.worker.Acquisition.overforce`).
     """
     config = with_backend(config, backend)
     lock = braid_lock(config)
@@ -1261,4 +1265,4 @@ def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtu
     device = make_backend(config, clock)
     operator = None if config.regulator.electronic else make_operator(config, device)
     return BenchRun(config, device, out_root, operator=operator, progress=progress,
-                    plot=plot, notify=notify, command=command).execute()
+                    plot=plot, notify=notify, command=command, ceiling=ceiling).execute()
