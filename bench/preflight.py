@@ -295,6 +295,11 @@ class ForceCeiling:
     friction_fraction: float
     source: str
 
+    def record(self) -> dict:
+        """What run.json's ``calibration`` records of it (``force_ceiling``)."""
+        return {"force_ceiling": {"source": self.source,
+                                  "friction_fraction": self.friction_fraction}}
+
 
 def force_bounds_N(config, n: int = 1001) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """What the configured muscle at its eps pulls at least and at most [N] at ``n``

@@ -782,7 +782,8 @@ class BenchRun:
             try:
                 self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
                                          estimate_duration_s(self.config),
-                                         [m.noted() for m in self.unvented])
+                                         [m.noted() for m in self.unvented],
+                                         self.ceiling.record() if self.ceiling else None)
             except OSError as exc:
                 self._folder_error = exc
                 raise

@@ -111,6 +111,9 @@ def test_a_monitor_reading_low_by_its_gain_is_stopped_by_the_identified_muscle(
     assert (run.samples["pressure_bar"] / 0.8).max() < 2.5
     assert run.meta.vent_check["verified"]
     assert run.commands["purpose"].iloc[-1] == "vent"
+    assert run.meta.calibration["force_ceiling"] == {
+        "source": f"the muscle identified in {calibration} (thickwall)",
+        "friction_fraction": 0.05067}
 
 
 @pytest.mark.parametrize("eps, truth", [
