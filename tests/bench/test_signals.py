@@ -72,6 +72,12 @@ def start_run(tmp_path, until="samples"):
     pytest.fail("no samples within 30 s")
 
 
+def vented(folder) -> bool:
+    """The run in ``folder`` has written its vent after a pressure step (commands.csv)."""
+    commands = (folder / "commands.csv").read_text()
+    return ",step\n" in commands and commands.rstrip().endswith(",vent")
+
+
 def assert_every_flushed_sample(run, flushed):
     assert len(run.samples) >= flushed
     np.testing.assert_array_equal(run.samples["sample"], np.arange(len(run.samples)))
@@ -90,30 +96,31 @@ def test_stop_signal_vents_within_0_2_s_and_records(tmp_path, name, times):
     proc, folder, flushed = start_run(tmp_path, until="step")  # pressurised when signalled
     signum = getattr(signal, name)
     sent = time.time()
-    for _ in range(times):
+    proc.send_signal(signum)
+    if times == 2:
+        # the second once the first one's vent is on disk: it then comes while the run stops
+        # (its vent check lasts a second or more). Sent 20 ms after the first, on a loaded
+        # machine it merged with it (one signal of a kind is pending at a time, in the kernel
+        # and in Python's handler) or, a Ctrl-C, came after the first one's safe point: three
+        # outcomes, a flake in 3 of 8 loops. A second Ctrl-C before that point is held in
+        # test_a_second_ctrl_c_before_the_safe_point_vents_at_once
+        deadline = time.monotonic() + 10
+        while not vented(folder) and time.monotonic() < deadline:
+            time.sleep(0.01)
         proc.send_signal(signum)
-        time.sleep(0.02)
     stdout, stderr = proc.communicate(timeout=20)
     assert proc.returncode == 128 + signum, stderr
     assert stdout.strip().splitlines()[-1] == str(folder)
     run = load_run(folder)
     assert run.status == "aborted" and run.meta.stop_signal == name
     assert run.meta.stop_signal_number == signum
-    if name == "SIGINT" and times == 1:
-        assert "at a safe point; vented" in run.reason
-    elif name == "SIGINT":
-        # the second Ctrl-C vents at once when it comes before the first one's safe point (a
-        # block's end, at most 0.1 s on: test_a_second_ctrl_c_before_the_safe_point_vents_at_
-        # once holds it); on a loaded machine this process may send it after that point, and
-        # it is noted behind the first one's stop
-        assert run.reason in (
-            "stopped by SIGINT (second Ctrl-C) at once; vented",
-            "stopped by Ctrl-C (SIGINT) at a safe point; vented; SIGINT received while "
-            "stopping: noted, the vent and the record went first"), run.reason
+    if name == "SIGINT":
+        assert run.reason.startswith("stopped by Ctrl-C (SIGINT) at a safe point; vented")
     else:
-        assert name in run.reason and "at once; vented" in run.reason
-    if name != "SIGINT" and times == 2:  # the second is noted, the first one's stop goes on
-        assert f"{name} received" in run.reason, run.reason
+        assert run.reason.startswith(f"stopped by {name} at once; vented"), run.reason
+    if times == 2:  # the second is noted, the first one's stop goes on
+        assert run.reason.endswith(f"; {name} received while stopping: noted, the vent and the "
+                                   "record went first"), run.reason
     assert_every_flushed_sample(run, flushed)
     last = run.commands.iloc[-1]
     assert last["purpose"] == "vent" and last["ok"] and last["command_bar"] == 0.0
@@ -231,7 +238,8 @@ def test_the_console_handler_is_registered_called_through_ctypes_and_removed(win
         caller = threading.Thread(target=lambda: returned.append(handler(CTRL_CLOSE_EVENT)))
         with pytest.raises(StopSignal) as stop:  # Windows' thread stops the main thread
             caller.start()
-            deadline = time.monotonic() + 2.0
+            # ended by the StopSignal as soon as that thread runs; the bound is a net only
+            deadline = time.monotonic() + 30.0
             while time.monotonic() < deadline:
                 time.sleep(0.01)
         assert stop.value.detail == "console closed"
