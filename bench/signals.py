@@ -303,7 +303,7 @@ def fatal_trace(folder: Path) -> Iterator[None]:
         return
     path = Path(folder) / FATAL_TRACE_FILE
     try:
-        file = open(path, "w", encoding="utf-8")  # noqa: SIM115 (held open for the block)
+        file = open(path, "w", encoding="utf-8")  # held open for the block: faulthandler's
     except OSError:
         yield
         return
