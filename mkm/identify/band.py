@@ -170,25 +170,29 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float):
                          "of `mkm identify RUNS --out DIR` for this muscle")
     key, entry = found
     record = entry["identified"]
-    declared = next((r["muscle"] for r in record.get("runs", []) if r.get("muscle")), {})
-    fitted = {p["parameter"] for p in record.get("parameters", []) if p.get("status") == "fitted"}
-    other = [name for name in ("D0_mm", "t0_mm", "L0_mm")
-             if name in declared and name not in fitted
-             and not math.isclose(float(declared[name]), float(getattr(muscle, name)),
-                                  rel_tol=1e-6)]
-    if other:
+    fitted = {p["parameter"]: p.get("value") for p in record.get("parameters", [])
+              if p.get("status") == "fitted"}
+    names = [name for name in ("D0_mm", "t0_mm", "L0_mm") if name not in fitted]
+
+    def other(run_muscle: dict) -> list[str]:  # what this run's muscle declares otherwise
+        return [name for name in names if name in run_muscle and not math.isclose(
+            float(run_muscle[name]), float(getattr(muscle, name)), rel_tol=1e-6)]
+
+    muscles = [r["muscle"] for r in record.get("runs", []) if r.get("muscle")]
+    if muscles and all(other(m) for m in muscles):
+        differ = other(muscles[0])
         raise ValueError(
             f"--calibration {calibration.path} identified a muscle of "
-            + ", ".join(f"{name}={declared[name]:g}" for name in other)
+            + ", ".join(f"{name}={muscles[0][name]:g}" for name in differ)
             + "; the configuration declares "
-            + ", ".join(f"{name}={getattr(muscle, name):g}" for name in other)
+            + ", ".join(f"{name}={getattr(muscle, name):g}" for name in differ)
             + ": expected the identification of the muscle this run holds")
     tube = identified_tube(calibration) or (muscle.D0_mm, muscle.t0_mm)
-    lengths = identified_lengths(calibration) or [muscle.L0_mm]
+    L0_mm = fitted.get("L0_mm") or muscle.L0_mm
     spec = parse_spec(key.partition("-")[0]).with_params(**{
         k: v for k, v in entry.get("model_params", {}).items()
         if k not in ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "L0_mm")},
-        L0_mm=float(lengths[0]))
+        L0_mm=float(L0_mm))
     pressure_bar = np.arange(0.0, CEILING_TOP * max_pressure_bar + CEILING_STEP_BAR / 2,
                              CEILING_STEP_BAR)
     model = spec.build(calibration)
@@ -199,10 +203,11 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float):
     if band is None:
         raise ValueError(f"--calibration {calibration.path}: no prediction band for its "
                          f"identified model {key}")
-    friction = next((p.get("ci_high") or p.get("value") for p in record.get("parameters", [])
+    friction = next((p["value"] if p.get("ci_high") is None else p["ci_high"]
+                     for p in record.get("parameters", [])
                      if p.get("parameter") == "hysteresis_fraction"
                      and p.get("value") is not None), None)
-    # where the model gives no valid force (past its lock) nothing bounds the muscle's
+    # where the model gives no valid force (past its lock) nothing bounds the force
     most = np.where(np.asarray(predicted.valid, dtype=bool) & np.isfinite(force + band),
                     np.maximum(force, 0.0) + band, np.inf)
     return ForceCeiling(tuple(map(float, pressure_bar)), tuple(map(float, most)),

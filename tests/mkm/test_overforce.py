@@ -14,6 +14,7 @@ runs of it at eps 0 and 0.122 (band and intervals rounded; seed 0), without the 
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import re
 from pathlib import Path
@@ -174,3 +175,18 @@ def test_acquire_takes_the_calibration_and_refuses_another_muscles(calibration, 
                    "identified with its prediction band: expected the calibration.json of "
                    "`mkm identify RUNS --out DIR` for this muscle\n")
     assert not (tmp_path / "runs").exists() or not list((tmp_path / "runs").iterdir())
+
+
+def test_a_muscle_identified_over_several_lengths_bounds_a_run_of_any_of_them(tmp_path):
+    # the runs of one tube at two lengths: a run of the second length is that muscle too
+    both = json.loads(json.dumps(CALIBRATION))
+    both["thickwall"]["identified"]["runs"][0]["muscle"]["L0_mm"] = 150.0
+    path = tmp_path / "calibration.json"
+    path.write_text(json.dumps(both))
+    config = sim_config(0.0)
+    ceiling = force_ceiling(Calibration.load(path), config.muscle, 2.5)
+    assert np.interp(2.5, ceiling.pressure_bar, ceiling.force_N) > 0
+    with pytest.raises(ValueError, match="identified a muscle of L0_mm=150; the "
+                       "configuration declares L0_mm=200: expected"):
+        force_ceiling(Calibration.load(path), dataclasses.replace(config.muscle, L0_mm=200.0),
+                      2.5)
