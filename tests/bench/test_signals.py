@@ -678,6 +678,9 @@ def test_a_fatal_signal_leaves_its_trace_in_the_run_folder_and_the_next_command_
     trace = (folder / "fatal-error.txt").read_text()
     assert trace.startswith(f"Fatal Python error: {words}\n"), trace
     assert "in read_then_fault" in trace  # the Python stack where it failed, every thread's
+    assert load_run(folder).problems[0] == (
+        f"the run's process died of a fatal error ({words}, {name}) without closing its record: "
+        f"the trace of its threads is in {folder / 'fatal-error.txt'}")  # mkm report says so
     assert main(["vent", "--config", str(config)]) == 0
     err = capsys.readouterr().err
     assert "ended without venting; its last commanded pressure was 0.5 bar" in err
