@@ -708,9 +708,10 @@ class BenchRun:
         elif outcome is not None:
             status, reason, error = (RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}",
                                      outcome)
-        if isinstance(late, StopSignal | KeyboardInterrupt) and signal_number is None:
+        if isinstance(late, StopSignal | KeyboardInterrupt):  # in the record, whatever it ends
             name = late.name if isinstance(late, StopSignal) else "SIGINT"
-            signal_name, signal_number = name, getattr(late, "signum", 2)
+            if signal_number is None:
+                signal_name, signal_number = name, getattr(late, "signum", 2)
             reason = f"{reason}; {name} received meanwhile"
         try:
             status, reason = self.shutdown(status, reason, signal_name, signal_number,
