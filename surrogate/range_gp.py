@@ -24,7 +24,6 @@ from mkm.surrogate.gp import posterior_mean_std
 from mkm.surrogate.muscle_gp import MuscleThresholdGP
 from mkm.surrogate.muscle_predictor import (
     MusclePredictor,
-    calibrated_factor,
     effective_shortening,
     from_log_k,
     process_inputs,
@@ -61,9 +60,8 @@ class RangePredictor(MusclePredictor):
 
     def _parts(self, X):
         v, m_A, s_A, m_P, s_P = self.log_k(X)
-        factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
-        return (*from_log_k(v, m_A, factor * s_A, m_P, factor * s_P),
-                effective_shortening(v, m_A))
+        sd_A, sd_P = self.calibrated(m_A, s_A, m_P, s_P)
+        return *from_log_k(v, m_A, sd_A, m_P, sd_P), effective_shortening(v, m_A)
 
 
 class RangeThresholdGP(MuscleThresholdGP):
@@ -75,6 +73,8 @@ class RangeThresholdGP(MuscleThresholdGP):
         # one optimiser restart: on its dataset three gave the same fresh errors (worst and
         # median) in several times the time
         super().__init__(inputs, fixed, restarts, random_state)
+
+    own_threshold_std = True
 
     def _muscle(self, X):
         return range_muscle_values(X, self.inputs, self.fixed)
