@@ -25,6 +25,7 @@ from mkm.surrogate.muscle_predictor import (
     log_k,
     muscle_values,
     process_inputs,
+    threshold_factor,
 )
 
 
@@ -232,38 +233,43 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
         self.std_scale_, self.std_power_, self.std_reference_ = 1.0, 0.0, 1.0
         self.threshold_std_scale_, self.threshold_std_power_ = 1.0, 0.0
         self.threshold_std_reference_ = 1.0
-        if self.own_threshold_std:
-            post = self.threshold_posterior_
-            target = post["y_std"] * np.ravel(self.threshold_gp_.y_train_) + post["y_mean"]
-            self._fit_threshold_std(target, loo[1][0][fitted[1]], loo[1][1][fitted[1]])
         both = np.zeros(len(first), dtype=bool)
         both[np.intersect1d(*fitted)] = True
         if both.sum() < 5:
             return
         muscle_of_row = np.searchsorted(np.unique(groups), groups)
         rows = both[muscle_of_row]
-        self._fit_std(X[rows, 0], y[rows], {k: val[muscle_of_row][rows] for k, val in v.items()},
-                      *(a[muscle_of_row][rows] for a in (*loo[0], *loo[1])))
+        points = (X[rows, 0], y[rows], {k: val[muscle_of_row][rows] for k, val in v.items()},
+                  *(a[muscle_of_row][rows] for a in (*loo[0], *loo[1])))
+        self._fit_std(*points)
+        if self.own_threshold_std:
+            post, at = self.threshold_posterior_, fitted[1]
+            target = post["y_std"] * np.ravel(self.threshold_gp_.y_train_) + post["y_mean"]
+            self._fit_threshold_std(target, loo[1][0][at],
+                                    loo[1][1][at] * self._calibrated(loo[0][0][at]))
+            self._fit_std(*points)  # the force's calibration again, with the threshold's
 
     def _fit_threshold_std(self, target, mean, std):
         """Set ``threshold_std_scale_``, ``threshold_std_power_`` and
-        ``threshold_std_reference_``: the factor ``c_P (log k_P / m_P,ref)^beta_P`` of the
-        threshold process's std (:func:`coverage_fit` on the leave-one-muscle-out errors of
-        ``log k_P``, ``target``, from their means ``mean`` and stds ``std``). ``log k_P``, the
-        threshold's own end-effect correction, is largest for short, thick-walled muscles at a
-        low braid angle, where its errors are largest for their std; the factor of ``log k_A``
-        the force's calibration fits for both processes, fitted mostly on pressures far above the
-        threshold where the slope's error dominates, leaves those too narrow."""
+        ``threshold_std_reference_``: the further factor ``c_P max(1, log k_P /
+        m_P,ref)^beta_P`` of the threshold process's std (:func:`threshold_factor`;
+        :func:`coverage_fit` on the leave-one-muscle-out errors of
+        ``log k_P``, ``target``, from their means ``mean`` and their stds ``std`` calibrated as
+        the force's calibration scales both processes). ``log k_P``, the threshold's own
+        end-effect correction, is largest for short, thick-walled muscles at a low braid angle,
+        where its errors are largest for their std: the factor of ``log k_A`` the force's
+        calibration fits for both processes, fitted mostly on pressures far above the threshold
+        where the slope's error dominates, leaves those too narrow."""
         reference = float(np.median(np.maximum(mean, 1e-3))) if mean.size else 1.0
         self.threshold_std_reference_ = reference
         self.threshold_std_scale_, self.threshold_std_power_ = coverage_fit(
-            target - mean, lambda c, beta: std * self._calibrated(mean, c, beta, reference))
+            target - mean, lambda c, beta: std * threshold_factor(mean, c, beta, reference))
 
     def _fit_std(self, P, y, v, m_A, s_A, m_P, s_P):
         """Set ``std_reference_``, ``std_scale_`` and ``std_power_`` from forces ``y`` [N] at
         pressures ``P`` [bar] of muscles ``v`` with ``log k`` means ``m`` and stds ``s``; the
         points both the FE and the model put at zero force say nothing and are left out."""
-        s_P = s_P * self._calibrated(m_P, self.threshold_std_scale_, self.threshold_std_power_,
+        s_P = s_P * threshold_factor(m_P, self.threshold_std_scale_, self.threshold_std_power_,
                                      self.threshold_std_reference_)
         # sd_A and sd_P* are linear in the std of log k (first order): their gains once
         A, gain_A, Pstar, gain_P = self._from_logk(v, m_A, np.ones_like(s_A), m_P,

@@ -66,6 +66,13 @@ def calibrated_factor(m_A, c, beta, reference):
     return c * (np.maximum(m_A, 1e-3) / reference) ** beta
 
 
+def threshold_factor(m_P, c, beta, reference):
+    """``c max(1, log k_P / m_ref)^beta``: the further factor of the threshold process's std of
+    ``log k_P`` at its mean ``m_P``, widening it where the threshold's own end-effect correction
+    exceeds ``m_ref`` (neutral at ``c = 1, beta = 0``)."""
+    return c * np.maximum(m_P / reference, 1.0) ** beta
+
+
 def effective_shortening(v, m):
     """``k eps`` [fraction] at ``log k`` = ``m`` of the muscles ``v``, kept short of the braid
     lock."""
@@ -170,9 +177,9 @@ class MusclePredictor:
 
     def calibrated(self, m_A, s_A, m_P, s_P):
         """The std of ``log k_A`` and ``log k_P`` calibrated: both times ``c (log k_A /
-        m_ref)^beta``, the threshold's also times its own ``c_P (log k_P / m_P,ref)^beta_P``."""
+        m_ref)^beta``, the threshold's also times its own :func:`threshold_factor`."""
         factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
-        return factor * s_A, factor * s_P * calibrated_factor(
+        return factor * s_A, factor * s_P * threshold_factor(
             m_P, self.threshold_std_scale, self.threshold_std_power,
             self.threshold_std_reference)
 
