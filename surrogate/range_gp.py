@@ -9,7 +9,9 @@ rubber ratio ``C01 / C10`` and ``log(D_braid / L0)`` (with ``theta0``, ``eps`` a
 as the default's); the default's linear inputs fitted to the practical muscles miss a fresh
 one by several percent (``docs/guide/surrogates.md``, "Beyond the box").
 The slope, threshold and std are the default's; the std keeps the fit's leave-one-muscle-out
-calibration (:meth:`RangeThresholdGP.calibrate_std`) before the held-out rescale.
+calibration (:meth:`RangeThresholdGP.calibrate_std`) before the held-out rescale, the
+threshold's widened by its own factor (``own_threshold_std``: over the range the threshold's
+end-effect correction reaches several times its median, for short, thick-walled muscles).
 """
 
 from __future__ import annotations
@@ -74,7 +76,7 @@ class RangeThresholdGP(MuscleThresholdGP):
         # median) in several times the time
         super().__init__(inputs, fixed, restarts, random_state)
 
-    own_threshold_std = True
+    own_threshold_std = True  # MuscleThresholdGP._fit_threshold_std
 
     def _muscle(self, X):
         return range_muscle_values(X, self.inputs, self.fixed)
