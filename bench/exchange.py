@@ -1126,7 +1126,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     pressure = np.where(noise, 0.0, pressure)
     handling["readings_below_zero_set_to_0"] = int(noise.sum())
     top_bar = float(pressure.max())
-    if top_bar > PRACTICAL_RANGE.pressure_bar[1]:
+    # a gauge's noise about a hold at the range's top is no unit read wrong: kPa or psi read
+    # as bar lie 10 times and more beyond it
+    declared = accuracy.get("pressure")
+    noise_bar = max(series.PLATEAU_TOLERANCE_BAR, 0.0 if declared is None else
+                    declared.absolute + declared.fraction * top_bar)
+    if top_bar > PRACTICAL_RANGE.pressure_bar[1] + noise_bar:
         # kPa or psi read as bar pass as a bar 10-100 times: under a header without a unit,
         # or one whose unit is wrong (a logger's channel set up in bar that records kPa)
         column = found["pressure"]
