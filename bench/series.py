@@ -326,6 +326,28 @@ def directions(pressure_bar: np.ndarray, held: list[Plateau]) -> list[str]:
     return out
 
 
+#: a load cell spreading more than ``settle.max_force_std_N`` at rest has the settle test's
+#: force limits scaled to this many times its spread, the limit the bench asks for such a cell
+#: (:func:`mkm.bench.sequence.settle_warning`)
+SETTLE_SPREADS = 3.0
+
+
+def settle_for_cell(config, rest_std_N: float):
+    """``config`` (a :class:`mkm.bench.config.BenchConfig`) with its ``[settle]`` force limits
+    scaled to the record's load cell, and the factor (1.0: unchanged). A cell spreading
+    ``rest_std_N`` [N] at rest beyond ``settle.max_force_std_N`` (a 10 kN cell's 3 N under a
+    60 mm muscle) would leave every hold unsettled under the packaged limits: its spread limit
+    becomes :data:`SETTLE_SPREADS` times that spread, and its slope limit grows by the same
+    factor, as the slope a window's noise alone makes grows with the noise."""
+    st = config.settle
+    if not rest_std_N > st.max_force_std_N:  # NaN too: no rest to read the cell's spread from
+        return config, 1.0
+    factor = SETTLE_SPREADS * rest_std_N / st.max_force_std_N
+    return config.replace(settle={
+        "max_force_std_N": st.max_force_std_N * factor,
+        "max_force_slope_N_per_s": st.max_force_slope_N_per_s * factor}), factor
+
+
 def staircase_steps(time_s, pressure_bar, force_N, settle_config,
                     held: list[Plateau] | None = None) -> tuple[list[StepRecord], np.ndarray]:
     """The steps of a staircase (module docstring) and each sample's step (-1: between
