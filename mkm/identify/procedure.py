@@ -461,8 +461,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                               "the prediction band's rubber-ratio term is extrapolated there")
     fitness = goodness.assess(runs, best)
     fitness.ratio_freed = ratio_freed(rubber)
-    # a group whose fit did not converge is not offered as what the fit lacks
-    fitness.shown = tuple(g for g in fitness.shown if g not in given_up)
+    # a group whose fit did not converge, or that was fitted and the BIC dropped, is not
+    # offered as what the fit lacks: asking for it again would repeat this fit
+    fitness.shown = tuple(g for g in fitness.shown if g not in given_up and g not in groups)
     if fitness.misfit and isinstance(source, Corrected) and surrogate_misfit(source, fe, runs,
                                                                              best):
         notify(f"the fit on the surrogate misfits where {fe.name} would not: identifying again "

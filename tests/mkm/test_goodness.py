@@ -379,3 +379,26 @@ def test_a_misfit_the_rubber_ratio_freed_takes_away_names_the_rubber():
     assert "C01/C10" not in plain and "(the estimates may be biased too" in plain
     assert goodness.Goodness([branch], 72.0, nu, ratio_freed=freed).record()[
         "ratio_freed"] == freed
+
+
+def test_a_misfit_offers_no_term_the_fit_tried_and_the_bic_dropped(tmp_path):
+    # a muscle that does not creep, its wall 0.4 mm thicker than declared and not fitted: a
+    # misfit. Creep is asked for and dropped by the BIC, so the line does not tell the reader
+    # to type the --params just run to fit it "too"
+    from mkm.identify import identify
+
+    paths = []
+    for k, eps in enumerate((0.0, 0.122)):
+        config = load_config(eps=eps).replace(
+            sequence={"pressures_bar": (0.5, 1.0, 1.5, 2.0, 2.5), "preconditioning_cycles": 0},
+            sim={"model": "thickwall", "seed": 2026120719 + k, "creep_fraction": 0.0,
+                 "truth": {"t0_mm": 3.4}})
+        result = acquire(config, out_root=tmp_path, notify=lambda message: None)
+        remove_simulator_settings(result.path)
+        paths.append(result.path)
+    result = identify(paths, params="theta0,rubber,friction,creep", model="thickwall",
+                      search="model")
+    assert result.dropped == ["creep"]
+    line = result.goodness.line()
+    assert line.startswith("misfit: ")
+    assert "not fitted, though the runs" not in line
