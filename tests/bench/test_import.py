@@ -1509,13 +1509,13 @@ def test_sample_rate_times_the_rows_of_a_table_without_a_clock(counter, tmp_path
     steps = run.steps
     np.testing.assert_allclose(steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
     # each hold timed in seconds: it starts where the ramp onto it enters its 0.03 bar band
-    # (1, 1 and 0.5 bar/s) and ends where the ramp off it leaves (1, 0.5 and 2.5 bar/s), to
-    # two samples
-    band_bar = 0.03
+    # (1, 1 and 0.5 bar/s) and ends where the ramp off it (1, 0.5 and 2.5 bar/s) leaves its
+    # level, by 0.005 bar (a noiseless record's floor), to two samples
+    band_bar, floor_bar = 0.03, 0.005
     np.testing.assert_allclose(steps["start_s"], np.array([6.0, 17.0, 28.0])
                                - band_bar / np.array([1.0, 1.0, 0.5]), atol=0.02)
     np.testing.assert_allclose(steps["end_s"], np.array([16.0, 27.0, 38.0])
-                               + band_bar / np.array([1.0, 0.5, 2.5]), atol=0.02)
+                               + floor_bar / np.array([1.0, 0.5, 2.5]), atol=0.02)
     # a rate with its unit is converted
     (fast,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "1kHz")
     assert fast.meta.imported_from["sample_rate_hz"] == 1000.0
