@@ -978,6 +978,16 @@ def _closing_rest(clock, pressure, force, rest) -> series.Tare | None:
     return end
 
 
+def _rest_spread_N(force, *rests) -> float:
+    """The load cell's spread at rest [N], a standard deviation: the smaller of the vented
+    rests ``rests`` (:class:`mkm.bench.series.Tare`, or None) of
+    :data:`~mkm.bench.series.SHORT_REST_SAMPLES` samples or more; NaN without one."""
+    spreads = [float(np.std(force[r.rest], ddof=1)) for r in rests
+               if r is not None and r.rest.stop - r.rest.start >= series.SHORT_REST_SAMPLES
+               and r.pressure_bar <= series.VENTED_THRESHOLD_BAR]
+    return min(spreads, default=math.nan)
+
+
 def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
     """The note (if any) of a record that ends vented at another zero than it started: the
     drift recorded as ``zero_drift_N`` (end less start), said when it is beyond 4 standard
@@ -1174,7 +1184,12 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     pressure = np.where(noise, 0.0, pressure)
     handling["readings_below_zero_set_to_0"] = int(noise.sum())
     top_bar = float(pressure.max())
-    if top_bar > PRACTICAL_RANGE.pressure_bar[1]:
+    # a gauge's noise about a hold at the range's top is no unit read wrong: kPa or psi read
+    # as bar lie 10 times and more beyond it
+    declared = accuracy.get("pressure")
+    noise_bar = max(series.PLATEAU_TOLERANCE_BAR, 0.0 if declared is None else
+                    declared.absolute + declared.fraction * top_bar)
+    if top_bar > PRACTICAL_RANGE.pressure_bar[1] + noise_bar:
         # kPa or psi read as bar pass as a bar 10-100 times: under a header without a unit,
         # or one whose unit is wrong (a logger's channel set up in bar that records kPa)
         column = found["pressure"]
@@ -1320,12 +1335,24 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if shape == "staircase":
             from mkm.bench.config import load_config
 
-            settle_config = load_config()
-            steps, step_of = series.staircase_steps(time_s, pressure, force, settle_config,
-                                                    held)
+            spread_N = _rest_spread_N(force, rest, closing)
+            config, factor = series.settle_for_cell(load_config(), spread_N)
+            steps, step_of = series.staircase_steps(time_s, pressure, force, config, held)
             handling["steps_from"] = ("plateaus judged by the bench's settle test "
                                       "(packaged [settle] criteria), averaged by HoldStats")
-            if unsettled := series.unsettled_note(pressure, held, steps, settle_config):
+            if factor > 1.0:
+                st = config.settle
+                handling["settle_scaled"] = {
+                    "rest_std_N": spread_N, "factor": factor,
+                    "max_force_std_N": st.max_force_std_N,
+                    "max_force_slope_N_per_s": st.max_force_slope_N_per_s}
+                handling["steps_from"] += (f", its force limits x{factor:.3g} for the load "
+                                           "cell's spread at rest")
+                notes.append(f"the load cell spreads {spread_N:.3g} N at rest: each hold judged "
+                             f"settled within {st.max_force_std_N:.3g} N and "
+                             f"{st.max_force_slope_N_per_s:.3g} N/s, the bench's [settle] "
+                             f"limits x{factor:.3g}, as the bench asks for such a cell")
+            if unsettled := series.unsettled_note(pressure, held, steps, config):
                 notes.append(unsettled)
         else:
             steps, step_of, width = series.ramp_steps(time_s, pressure, force)

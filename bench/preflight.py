@@ -27,6 +27,8 @@ it, else the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says whic
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from mkm.bench import backends
@@ -275,6 +277,28 @@ FRICTION_FRACTION = 0.1
 #: relaxes by a few % over a minute's hold (identify's
 #: :data:`~mkm.identify.procedure.UNTIMED_CREEP_FRACTION`, 3 %; the simulator's 2 %).
 CREEP_FRACTION = 0.05
+
+
+
+@dataclass(frozen=True)
+class ForceCeiling:
+    """The most an identified muscle pulls at the run's eps: ``force_N`` [N] at each of
+    ``pressure_bar`` [bar] (its static force plus its 95 % prediction band), the braid's
+    friction's upper end ``friction_fraction`` (a falling pressure leaves that share of the
+    static force in), and ``source``, what it was identified in (said where it trips). Built by
+    the application from a calibration of ``mkm identify``
+    (:func:`mkm.identify.band.force_ceiling`); the over-force interlock's bound
+    (:meth:`mkm.bench.worker.Acquisition.overforce`)."""
+
+    pressure_bar: tuple[float, ...]
+    force_N: tuple[float, ...]
+    friction_fraction: float
+    source: str
+
+    def record(self) -> dict:
+        """What run.json's ``calibration`` records of it (``force_ceiling``)."""
+        return {"force_ceiling": {"source": self.source,
+                                  "friction_fraction": self.friction_fraction}}
 
 
 def force_bounds_N(config, n: int = 1001) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -74,11 +74,12 @@ SYNC_EVERY_S = 1.0
 
 
 class Recorder:
-    """Creates the run folder under ``out_root`` and records into it."""
+    """Creates the run folder under ``out_root`` and records into it; ``bounds``: more of what
+    the run is judged by, recorded with its calibration (the identified muscle's force ceiling)."""
 
     def __init__(self, out_root: str | Path, config: BenchConfig, info: DeviceInfo,
                  n_steps: int, estimated_duration_s: tuple[float, float],
-                 unvented_before: list[dict] | None = None):
+                 unvented_before: list[dict] | None = None, bounds: dict | None = None):
         m = config.muscle
         prov = provenance()
         settings = config.as_dict()
@@ -88,7 +89,8 @@ class Recorder:
             hardware=info.as_dict(),
             calibration={"loadcell": settings["loadcell"], "regulator": settings["regulator"],
                          "safety": settings["safety"],
-                         "muscle_tolerances": dataclasses.asdict(m.tolerances)},
+                         "muscle_tolerances": dataclasses.asdict(m.tolerances),
+                         **(bounds or {})},
             sequence={**settings["sequence"], "settle": settings["settle"],
                       "force_limit_N": config.force_limit_N, "n_steps": n_steps,
                       "estimated_duration_s": list(estimated_duration_s)},

@@ -56,6 +56,7 @@ import queue
 import sys
 import threading
 import time
+from contextlib import ExitStack
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -65,10 +66,10 @@ from mkm.bench.bounded import call_within
 from mkm.bench.config import MONITOR_FAULT, BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
-from mkm.bench.preflight import braid_lock, warnings
+from mkm.bench.preflight import ForceCeiling, braid_lock, warnings
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
-from mkm.bench.signals import StopSignal, StopSignals
+from mkm.bench.signals import StopSignal, StopSignals, fatal_trace
 from mkm.bench.storage import CommandRecord, RunStatus
 from mkm.bench.unvented import STATE_WAIT_S, BenchLease, Marker, vent_unvented
 from mkm.bench.vent import (
@@ -552,7 +553,8 @@ class BenchRun:
 
     def __init__(self, config: BenchConfig, backend: Backend, out_root: str | Path,
                  operator: Operator | None = None, progress: bool = False, plot: bool = False,
-                 handle_signals: bool = True, notify=None, command: str = "acquire"):
+                 handle_signals: bool = True, notify=None, command: str = "acquire",
+                 ceiling: ForceCeiling | None = None):
         if not config.regulator.electronic and operator is None:
             raise ValueError("regulator.kind='manual' needs an operator to set the pressure")
         self.config = config
@@ -566,7 +568,9 @@ class BenchRun:
         self._console: _Console | None = None
         self.handle_signals = handle_signals
         self.command = command
+        self.ceiling = ceiling  # the identified muscle's most: the over-force interlock's bound
         self.signals = StopSignals()
+        self._fatal = ExitStack()  # the fatal-error trace into the run folder (fatal_trace)
         self.steps = plan_steps(config)
         self.recorder: Recorder | None = None
         self.acquisition: Acquisition | None = None
@@ -704,14 +708,16 @@ class BenchRun:
         elif outcome is not None:
             status, reason, error = (RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}",
                                      outcome)
-        if isinstance(late, StopSignal | KeyboardInterrupt) and signal_number is None:
+        if isinstance(late, StopSignal | KeyboardInterrupt):  # in the record, whatever it ends
             name = late.name if isinstance(late, StopSignal) else "SIGINT"
-            signal_name, signal_number = name, getattr(late, "signum", 2)
+            if signal_number is None:
+                signal_name, signal_number = name, getattr(late, "signum", 2)
             reason = f"{reason}; {name} received meanwhile"
         try:
             status, reason = self.shutdown(status, reason, signal_name, signal_number,
                                            say_vent)
         finally:
+            self._fatal.close()
             self.signals.done()
         if signal_number is not None:
             exit_code = 128 + signal_number
@@ -777,10 +783,12 @@ class BenchRun:
             try:
                 self.recorder = Recorder(self.out_root, self.config, info, len(self.steps),
                                          estimate_duration_s(self.config),
-                                         [m.noted() for m in self.unvented])
+                                         [m.noted() for m in self.unvented],
+                                         self.ceiling.record() if self.ceiling else None)
             except OSError as exc:
                 self._folder_error = exc
                 raise
+        self._fatal.enter_context(fatal_trace(self.recorder.path))
         # the lease is kept from here on: a stop while its first write is waited for still
         # removes the marker at the shutdown
         lease = self.lease = BenchLease(getattr(self.backend, "bench_key", "unknown"),
@@ -805,7 +813,7 @@ class BenchRun:
         self.acquisition = Acquisition(
             self.config, self.backend, self.recorder, stop_requested=self._pending_stop,
             stop_time=self._stop_time, lease=self.lease, observers=self._observers,
-            guard=self.signals.deferred)
+            guard=self.signals.deferred, ceiling=self.ceiling)
         self.acquisition.command(0.0, "vent")
         # no watchdog yet: bounded as `mkm vent`'s start of the inputs (the AO write's timeout
         # and the margin, as a command write)
@@ -1238,14 +1246,16 @@ def with_backend(config: BenchConfig, backend: str | None) -> BenchConfig:
 def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
             out_root: str | Path = "data/experimental", progress: bool = False,
             plot: bool = False, notify=None, allow_past_lock: bool = False,
-            command: str = "acquire") -> RunResult:
+            command: str = "acquire", ceiling: ForceCeiling | None = None) -> RunResult:
     """Record one run of ``config`` under ``out_root``.
 
     ``backend`` overrides ``config.daq.backend``. A muscle held past its braid lock is refused
     (``ValueError``) unless ``allow_past_lock``; a load cell the wrong size for the muscle, or
     a muscle outside the practical range, is said (:func:`mkm.bench.preflight.warnings`).
     ``notify`` receives the operator's lines (default: stderr, ``mkm <command>: ...``, with
-    ``command`` the command the user ran).
+    ``command`` the command the user ran). ``ceiling``: the most the muscle ``mkm identify``
+    identified pulls (:func:`mkm.identify.band.force_ceiling`), which arms the over-force
+    interlock (:meth:`mkm.bench.worker.Acquisition.overforce`).
     """
     config = with_backend(config, backend)
     lock = braid_lock(config)
@@ -1257,4 +1267,4 @@ def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtu
     device = make_backend(config, clock)
     operator = None if config.regulator.electronic else make_operator(config, device)
     return BenchRun(config, device, out_root, operator=operator, progress=progress,
-                    plot=plot, notify=notify, command=command).execute()
+                    plot=plot, notify=notify, command=command, ceiling=ceiling).execute()

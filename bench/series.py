@@ -18,8 +18,9 @@ ramp, and the steps are taken:
 
 - :func:`staircase_steps`: each plateau is a step, its settling judged by the bench's own test
   (:func:`mkm.bench.sequence.settle_reached`, with the packaged configuration's ``[settle]``
-  criteria) and its hold averaged by the bench's :class:`mkm.bench.sequence.HoldStats`; a
-  plateau that never settles is averaged over its second half and recorded ``settled = false``;
+  criteria) and its hold averaged by the bench's :class:`mkm.bench.sequence.HoldStats`, up to
+  where the pressure leaves its level at the plateau's end (:func:`_held_stop`); a plateau
+  that never settles is averaged over its second half and recorded ``settled = false``;
 - :func:`untimed_staircase_steps`: the plateaus of a staircase recorded without its time (its
   rows the clock), each averaged over its second half;
 - :func:`ramp_steps`: quasi-static points, the samples binned by pressure on each branch apart
@@ -326,6 +327,28 @@ def directions(pressure_bar: np.ndarray, held: list[Plateau]) -> list[str]:
     return out
 
 
+#: a load cell spreading more than ``settle.max_force_std_N`` at rest has the settle test's
+#: force limits scaled to this many times its spread, the limit the bench asks for such a cell
+#: (:func:`mkm.bench.sequence.settle_warning`)
+SETTLE_SPREADS = 3.0
+
+
+def settle_for_cell(config, rest_std_N: float):
+    """``config`` (a :class:`mkm.bench.config.BenchConfig`) with its ``[settle]`` force limits
+    scaled to the record's load cell, and the factor (1.0: unchanged). A cell spreading
+    ``rest_std_N`` [N] at rest beyond ``settle.max_force_std_N`` (a 10 kN cell's 3 N under a
+    60 mm muscle) would leave every hold unsettled under the packaged limits: its spread limit
+    becomes :data:`SETTLE_SPREADS` times that spread, and its slope limit grows by the same
+    factor, as the slope a window's noise alone makes grows with the noise."""
+    st = config.settle
+    if not rest_std_N > st.max_force_std_N:  # NaN too: no rest to read the cell's spread from
+        return config, 1.0
+    factor = SETTLE_SPREADS * rest_std_N / st.max_force_std_N
+    return config.replace(settle={
+        "max_force_std_N": st.max_force_std_N * factor,
+        "max_force_slope_N_per_s": st.max_force_slope_N_per_s * factor}), factor
+
+
 def staircase_steps(time_s, pressure_bar, force_N, settle_config,
                     held: list[Plateau] | None = None) -> tuple[list[StepRecord], np.ndarray]:
     """The steps of a staircase (module docstring) and each sample's step (-1: between
@@ -336,14 +359,15 @@ def staircase_steps(time_s, pressure_bar, force_N, settle_config,
     records = []
     repeats: dict[tuple[str, float], int] = {}
     for k, (q, direction) in enumerate(zip(held, directions(pressure_bar, held), strict=True)):
-        t, f, p = time_s[q.start:q.stop], force_N[q.start:q.stop], pressure_bar[q.start:q.stop]
+        stop = q.start + _held_stop(pressure_bar[q.start:q.stop], q.level_bar)
+        t, f, p = time_s[q.start:stop], force_N[q.start:stop], pressure_bar[q.start:stop]
         settle_at, settled = _settle_index(t, f, p, q.level_bar, settle_config)
         hold = HoldStats()
         for j in range(settle_at, t.size):
             hold.add(float(t[j]), float(f[j]), float(p[j]))
         key = (direction, round(q.level_bar, 2))
         repeats[key] = repeats.get(key, -1) + 1
-        step_of[q.start:q.stop] = k
+        step_of[q.start:stop] = k
         records.append(StepRecord(
             k, direction, repeats[key], round(q.level_bar, 4), hold.pressure_mean, hold.mean,
             hold.std, hold.n, settled, float(t[settle_at] - t[0]), float(t[0]), float(t[-1]),
@@ -383,6 +407,24 @@ def unsettled_note(pressure_bar: np.ndarray, held: list[Plateau], steps: list[St
     return (f"{len(said)} step(s) did not settle (the bench's settle test), kept in steps.csv "
             "with settled = false and left out by mkm identify, which fits settled holds "
             "alone: " + "; ".join(said))
+#: a hold ends before the trailing samples of its plateau whose pressure lies this many robust
+#: standard deviations of the plateau's pressure from its level, and :data:`DEPARTURE_FLOOR_BAR`
+#: at least: the next step's rise, within the plateau's band, pulls a steep muscle's force with
+#: it (0.02 bar of a 60 mm muscle's 4 kN/bar: 90 N on a 3 N cell)
+DEPARTURE_SIGMAS = 4.0
+DEPARTURE_FLOOR_BAR = 0.005
+
+
+def _held_stop(p: np.ndarray, level_bar: float) -> int:
+    """How many of a plateau's samples (its pressures ``p``, held at ``level_bar``) the hold
+    keeps: all but the trailing ones that leave the level (:data:`DEPARTURE_SIGMAS`), never
+    more than half of them."""
+    away = np.abs(p - level_bar)
+    bound = max(DEPARTURE_SIGMAS * 1.4826 * float(np.median(away)), DEPARTURE_FLOOR_BAR)
+    stop = p.size
+    while stop > p.size // 2 + 1 and away[stop - 1] > bound:
+        stop -= 1
+    return stop
 
 
 def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]) -> list[StepRecord]:

@@ -28,18 +28,25 @@ goes, :class:`StopSignals` handles:
   interactive console program is ended at log-off without notice (its bench marker then makes
   the next command vent, :mod:`mkm.bench.unvented`).
 
+A fault in a driver or an extension (``SIGSEGV``, ``SIGBUS``, ``SIGFPE``, ``SIGILL``) ends the
+process whatever a handler does; while a run goes, :func:`fatal_trace` has :mod:`faulthandler`
+write every thread's trace into the run folder as it ends, and the next command on the bench,
+which vents first, names the error and the file (:func:`fatal_error`).
+
 Only the signals this platform has are touched (``hasattr(signal, name)``), and the console
 handler is installed only on Windows (:data:`WINDOWS`).
 """
 
 from __future__ import annotations
 
+import faulthandler
 import signal
 import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from pathlib import Path
 
 STOP_SIGNAL_NAMES = ("SIGINT", "SIGTERM", "SIGHUP", "SIGBREAK")
 STOP_SIGNALS = tuple(getattr(signal, n) for n in STOP_SIGNAL_NAMES if hasattr(signal, n))
@@ -67,6 +74,14 @@ SUSPEND_SIGNAL = getattr(signal, "SIGTSTP", None)
 #: (POSIX; ``stty tostop``): ignored while a run goes, its lines are written (its reads fail)
 BACKGROUND_SIGNALS = tuple(getattr(signal, n) for n in ("SIGTTOU", "SIGTTIN")
                            if hasattr(signal, n))
+
+#: the file of a run folder that faulthandler writes the trace of a fatal error into
+#: (:func:`fatal_trace`), removed when the run ends without one
+FATAL_TRACE_FILE = "fatal-error.txt"
+#: the fatal signals by the words faulthandler heads their trace with
+FATAL_WORDS = {"Segmentation fault": "SIGSEGV", "Bus error": "SIGBUS",
+               "Floating point exception": "SIGFPE", "Illegal instruction": "SIGILL",
+               "Aborted": "SIGABRT"}
 
 #: what the first Ctrl-C and a refused Ctrl-Z say (:meth:`StopSignals.said`)
 FIRST_INTERRUPT = "stopping at the next safe point (Ctrl-C again to vent now)"
@@ -264,3 +279,69 @@ class StopSignals:
         self._console_callback = handler_type(lambda event: bool(self.on_console_event(event)))
         if not ctypes.windll.kernel32.SetConsoleCtrlHandler(self._console_callback, True):
             self._console_callback = None
+
+
+def _keep_python_handlers() -> None:
+    """Give the signals faulthandler also takes (SIGABRT) back to the Python handler the run
+    installed: faulthandler's would dump and end the process where a stop signal vents."""
+    for signum in ENDING_SIGNALS:
+        handler = signal.getsignal(signum)
+        if callable(handler):
+            signal.signal(signum, handler)
+
+
+@contextmanager
+def fatal_trace(folder: Path) -> Iterator[None]:
+    """While the block runs, a fatal error (SIGSEGV, SIGBUS, SIGFPE, SIGILL, which a fault in a
+    driver or an extension raises and no handler survives) writes the Python trace of every
+    thread into ``folder``/:data:`FATAL_TRACE_FILE` (:mod:`faulthandler`) as the process ends;
+    the next command on the bench vents and names it (:func:`fatal_error`). The file is
+    removed after a block that ended without one; faulthandler is given back as it was (to
+    stderr where it was on). Main thread only; a folder that refuses the file is run without."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    path = Path(folder) / FATAL_TRACE_FILE
+    try:
+        file = open(path, "w", encoding="utf-8")  # held open for the block: faulthandler's
+    except OSError:
+        yield
+        return
+    enabled = faulthandler.is_enabled()
+    faulthandler.enable(file, all_threads=True)
+    _keep_python_handlers()
+    try:
+        yield
+    finally:
+        faulthandler.disable()
+        stderr = sys.__stderr__
+        if enabled and stderr is not None:
+            try:
+                faulthandler.enable(stderr, all_threads=True)
+            except (ValueError, OSError, AttributeError):  # no file descriptor of its own
+                pass
+        _keep_python_handlers()
+        file.close()
+        try:
+            if path.stat().st_size == 0:
+                path.unlink()
+        except OSError:
+            pass
+
+
+def fatal_error(folder: Path) -> str:
+    """What the fatal error that ended a run's process was, from the trace
+    :func:`fatal_trace` left in its ``folder`` (``Segmentation fault, SIGSEGV``), or "" when it
+    left none."""
+    path = Path(folder) / FATAL_TRACE_FILE
+    try:
+        with open(path, encoding="utf-8", errors="replace") as file:
+            first = file.readline(200).strip()
+    except OSError:
+        return ""
+    if not first:
+        return ""
+    words = first.removeprefix("Fatal Python error: ")
+    name = FATAL_WORDS.get(words)
+    return f"{words}, {name}" if name else words
+

@@ -43,6 +43,7 @@ from typing import Any, NamedTuple
 import numpy as np
 import pandas as pd
 
+from mkm.bench.signals import FATAL_TRACE_FILE, fatal_error
 from mkm.core.guards import regular_file
 from mkm.core.home import user_state
 from mkm.core.records import (
@@ -1161,7 +1162,11 @@ def load_run(path: str | Path) -> Run:
     unvented = None
     if status == RunStatus.RUNNING and not (meta.process and meta.process.alive()):
         status = RunStatus.INCOMPLETE
-        problems.append("the run stopped without closing its record (killed or crashed)")
+        fatal = fatal_error(path)  # the trace faulthandler wrote as the process died
+        problems.append(f"the run's process died of a fatal error ({fatal}) without closing its "
+                        f"record: the trace of its threads is in {path / FATAL_TRACE_FILE}"
+                        if fatal else
+                        "the run stopped without closing its record (killed or crashed)")
         # run.json's counter is from its last rewrite; the rows on disk are the truth
         written = Run(path, meta, steps, status).n_samples if samples_csv.is_file() else 0
         if written != meta.counters.get("samples"):

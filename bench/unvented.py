@@ -31,6 +31,7 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 
+from mkm.bench.signals import FATAL_TRACE_FILE, fatal_error
 from mkm.bench.storage import (
     OUTCOME_FIELDS,
     ProcessIdentity,
@@ -412,6 +413,9 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
     died = (datetime.datetime.fromtimestamp(csv.stat().st_mtime, datetime.UTC)
             .isoformat(timespec="seconds") if csv.is_file() else marker.last_command_utc)
     outcome, whole = marker.outcome, False
+    fatal = fatal_error(path)  # the trace faulthandler wrote as the process died
+    trace = (f"; its process died of a fatal error ({fatal}): the trace of its threads is in "
+             f"{path / FATAL_TRACE_FILE}") if fatal else ""
     if outcome:
         try:
             meta, whole = outcome_written(meta, outcome, "the run's record its bench marker kept")
@@ -426,11 +430,14 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
     else:
         meta.status = RunStatus.KILLED
         meta.ended_utc = died or None
-        meta.reason = (f"its process (pid {marker.process.get('pid')}) died without closing "
-                       f"the record (killed or power lost), at about "
+        how = (f"of a fatal error ({fatal})" if fatal
+               else "without closing the record (killed or power lost)")
+        meta.reason = (f"its process (pid {marker.process.get('pid')}) died {how}, at about "
                        f"{died or 'an unknown time'}; its last commanded pressure was "
                        f"{marker.last_command_bar:g} bar; vented by the next command at "
-                       f"{provenance()['date_utc']}")
+                       f"{provenance()['date_utc']}"
+                       + (f"; the trace of its threads is in {path / FATAL_TRACE_FILE}"
+                          if fatal else ""))
     release_reserve(path)  # the room it kept for its final record: this one
     try:
         write_json_atomic(path / "run.json", meta.as_dict())
@@ -440,4 +447,5 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
                 not outcome)
     alone = "" if whole or not outcome else (" (its marker kept the outcome alone, not the "
                                               "whole record)")
-    return f"run.json mended: status {meta.status}, {samples} samples on disk{alone}", True
+    return (f"run.json mended: status {meta.status}, {samples} samples on disk{alone}{trace}",
+            True)

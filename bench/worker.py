@@ -26,7 +26,12 @@ disk, :mod:`mkm.bench.recorder` writes behind it):
   whatever the tolerance: above
   ``regulator.max_pressure_bar`` by more than :data:`OVERPRESSURE_MARGIN_FRACTION` of it for
   longer than :data:`OVERPRESSURE_HOLD_S`, or by more than :data:`OVERPRESSURE_HARD_FRACTION`
-  of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``.
+  of it at once (a regulator that overshoots); the run is ``failed``, not ``aborted``;
+- over-force, where the run was given the muscle ``mkm identify`` identified (a
+  :class:`~mkm.bench.preflight.ForceCeiling`; electronic regulator, after the tare, a pressure
+  commanded): the load cell is the monitor's independent witness (:meth:`Acquisition.overforce`),
+  as a monitor that reads low hides from the over-pressure limit the pressure its regulator
+  delivers; the run is ``failed``.
 
 - disk: the run folder's disk finishing no write for ``recorder.DISK_STUCK_S`` with samples
   held, or trailing by more than that much sample time for as long (they are written when it
@@ -52,7 +57,13 @@ from mkm.bench import backends
 from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
-from mkm.bench.preflight import CREEP_FRACTION, FRICTION_FRACTION, adc_step_N, force_bounds_N
+from mkm.bench.preflight import (
+    CREEP_FRACTION,
+    FRICTION_FRACTION,
+    ForceCeiling,
+    adc_step_N,
+    force_bounds_N,
+)
 from mkm.bench.recorder import Recorder
 from mkm.bench.signals import StopSignal
 from mkm.bench.storage import CommandRecord, Gap, RunStatus, Sample
@@ -69,6 +80,12 @@ OVERPRESSURE_HARD_FRACTION = 0.10
 #: The bench marker takes milliseconds on a local disk; a state folder slower than this [s] hangs
 #: (a network share), and the loop goes on without it rather than leave the interlocks unwatched.
 MARKER_WAIT_S = 0.5
+#: the over-force interlock judges readings from this fraction of ``max_pressure_bar`` up: a
+#: monitor reading low hides over-pressure only near the limit (one reading 0.8 of the pressure
+#: hides it from 0.8 of the limit), and one that reads less than half the pressure its
+#: regulator holds (frozen near 0 bar) is the follow and stuck-monitor interlocks'; below it a
+#: load cell's zero drifting beyond its data sheet is no over-pressure
+OVERFORCE_FROM_FRACTION = 0.5
 #: a load cell whose input holds one ADC code this long [s] of sample time, where its tare
 #: strayed more than a step, is stuck or disconnected: no live cell's noise stays on one code
 #: (twenty readings at 10 Hz; one step of noise keeps two readings on one code at most a third
@@ -111,12 +128,14 @@ class Acquisition:
     ``lease`` (a :class:`mkm.bench.unvented.BenchLease`) learns every commanded pressure.
     ``guard`` makes the context that a block's read and its recording share (the run's
     :meth:`mkm.bench.signals.StopSignals.deferred`: no signal between the two loses the block).
+    ``ceiling``: the most the identified muscle pulls (None: no over-force interlock).
     """
 
     def __init__(self, config: BenchConfig, backend: Backend, recorder: Recorder,
                  stop_requested=lambda: None, stop_time=lambda: None, lease=None,
-                 observers=(), guard=nullcontext):
+                 observers=(), guard=nullcontext, ceiling: ForceCeiling | None = None):
         self.config = config
+        self.ceiling = ceiling
         self.guard = guard
         self.backend = backend
         self.recorder = recorder
@@ -162,6 +181,14 @@ class Acquisition:
         self._peak_bar = 0.0
         self._peak_at_code: float | None = None
         self.unmoved = ""  # why unmoved_cell found the load cell stuck ("" while it did not)
+        # the over-force interlock (:meth:`overforce`): the tare taken, the last three
+        # plausible readings [bar] and finite forces [N], the command of the last sample [bar]
+        # and when a command last fell [s]
+        self._tared = False
+        self._over3_bar: deque = deque(maxlen=3)
+        self._over3_N: deque = deque(maxlen=3)
+        self._last_commanded_bar = 0.0
+        self._fell_s = -math.inf
         self.highest_bar = 0.0
         self.command_bar = 0.0
         self.pressure_commanded_bar = 0.0  # the last pressure above 0 bar written
@@ -431,7 +458,8 @@ class Acquisition:
         if trips is not None:
             # the measured pressure is the monitor's, or the operator's manometer reading: a
             # hand regulator turned past the limit is as over-pressured as an electronic one
-            over = self._overpressure(t_s, pressure)
+            over = (self._overpressure(t_s, pressure)
+                    or self.overforce(t_s, pressure if plausible else math.nan, force, commanded))
             fault = over or self._stuck_cell(t_s, cell_V, force) or self.unmoved_cell(force)
             trip = fault or self._interlock(index, force, pressure, cell_V, monitor_V, flags)
             if trip:
@@ -690,6 +718,75 @@ class Acquisition:
                     f"{OVERPRESSURE_HOLD_S:g} s (regulator overshoot)")
         return None
 
+    def overforce(self, t_s: float, pressure: float, force: float, commanded: float) -> str | None:
+        """The over-force interlock's message, or None: the load cell, an instrument the
+        regulator does not close its loop on, read more force than the identified muscle
+        (:attr:`ceiling`) pulls at the measured pressure. The regulator holds its monitor's
+        reading at the command, so a monitor that reads low (a gain or zero error) delivers more
+        pressure than it reads, unseen by the over-pressure limit, and the muscle pulls the
+        force of the pressure it holds. Judged, on medians of three (one glitch moves none),
+        where the force read, less the load cell's accuracy (the tare's noise, two ADC steps,
+        its zero drift, non-linearity and sensitivity tolerance), exceeds the ceiling's force at
+        the reading taken its accuracy high, plus the identified friction (which a falling
+        pressure leaves in the force), but no more than the ceiling at the highest reading
+        since the muscle was last vented, also taken its accuracy high (the braid holds a force
+        at most at what that peak pulled up; creep and a yielding frame only take force off).
+        Only with an electronic regulator, after the tare (forces before it are from the
+        configured zero), under a pressure commanded, at a reading from
+        :data:`OVERFORCE_FROM_FRACTION` of ``max_pressure_bar`` up, and not within
+        ``safety.pressure_follow_s`` of a command that fell: a muscle exhausts through its tube
+        behind the regulator's sensor, and holds more than the reading meanwhile (on a rise it
+        lags below it, which only lowers the force)."""
+        ceiling = self.ceiling
+        if ceiling is None or not self.electronic:
+            return None
+        if commanded < self._last_commanded_bar:
+            self._fell_s = t_s
+        self._last_commanded_bar = commanded
+        if not (self._tared and commanded > 0 and math.isfinite(pressure)
+                and math.isfinite(force)):
+            self._over3_bar.clear()  # medians of consecutive samples judged only
+            self._over3_N.clear()
+            return None
+        self._over3_bar.append(pressure)
+        self._over3_N.append(force)
+        if (len(self._over3_bar) < 3
+                or t_s - self._fell_s < self.config.safety.pressure_follow_s - 1e-9):
+            return None
+        reading, force_N = statistics.median(self._over3_bar), statistics.median(self._over3_N)
+        measured = reading + self.monitor_low_bar
+        if measured < OVERFORCE_FROM_FRACTION * self.config.regulator.max_pressure_bar:
+            return None
+        offset_bar, gain = self.config.regulator.reading_bounds()
+        high_bar = measured + offset_bar + gain * measured
+        friction = ceiling.friction_fraction
+        most = (1.0 + friction) * float(np.interp(high_bar, ceiling.pressure_bar,
+                                                  ceiling.force_N))
+        where = (f"at {high_bar:.3f} bar, the reading at its accuracy, with its 95 % band and "
+                 f"{100 * friction:.3g} % for the braid's friction")
+        peak = self._peak_bar + self.monitor_low_bar
+        peak_bar = peak + offset_bar + gain * peak
+        rise = float(np.interp(peak_bar, ceiling.pressure_bar, ceiling.force_N))
+        if rise < most:
+            most, where = rise, (f"at {peak_bar:.3f} bar, the highest reading since the vent "
+                                 "at its accuracy, with its 95 % band: the braid holds no more "
+                                 "than that pressure pulled")
+        cell = self.cell
+        accuracy_N = (ZERO_NOISE_SIGMAS * self.tare_std_V * cell.sensitivity_N_per_V
+                      + 2 * self.step_N
+                      + (cell.zero_drift_fraction_fs + cell.nonlinearity_fraction_fs)
+                      * cell.capacity_N + cell.sensitivity_tolerance_fraction * abs(force_N))
+        if not force_N - accuracy_N > most:
+            return None
+        return (f"over-force interlock: the load cell read {force_N:.1f} N at {t_s:g} s with "
+                f"the monitor reading {measured:.3f} bar, more than the muscle pulls there: "
+                f"{ceiling.source} pulls at most {most:.1f} N at eps "
+                f"{self.config.muscle.eps:g} ({where}), and the load cell's accuracy is "
+                f"{accuracy_N:.1f} N: the pressure monitor reads low (a gain or zero error; the "
+                "regulator holds that reading at the command and delivers more, which the "
+                "over-pressure limit does not see), or the load cell reads high; check the "
+                "monitor against a reference gauge and the load cell with a known mass")
+
     def _vent_for(self, message: str, status: RunStatus) -> Stop:
         """Command the interlock's vent now; the :class:`Stop` that says so, to raise once the
         tripping block is recorded."""
@@ -745,6 +842,7 @@ class Acquisition:
         self._recent_N = deque((force - shift_N for force in self._recent_N),
                                maxlen=self._recent_N.maxlen)
         self.tare_offset_V, self.tare_std_V = offset_V, std_V
+        self._tared = True
         self._bounds()  # built before any pressure, not in the rise they judge
 
     def hung_said(self) -> str:

@@ -44,7 +44,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.auto import MIN_SCALE_N, RANGE_STD_FACTOR, STD_FACTOR
-from mkm.core.records import jsonable, provenance, recorded_path
+from mkm.core.records import jsonable, package_file, provenance, recorded_path
 from mkm.fem.limits import lock_eps
 from mkm.surrogate import kinds
 from mkm.surrogate.design import EVAL_PRESSURES, build_practical_set, fe_sweeps, random_muscles
@@ -53,6 +53,15 @@ from mkm.surrogate.kinds import make_estimator
 from mkm.surrogate.quiet import quiet_fits
 from mkm.surrogate.train import cached_model
 from mkm.surrogate.training_data import load_training_data
+
+
+def dataset_path(path) -> str:
+    """``path`` as the record names it: a dataset shipped with mkm as ``surrogate/data/NAME``,
+    wherever mkm is installed or the benchmark runs; another file by
+    :func:`~mkm.core.records.recorded_path`."""
+    if Path(path).resolve().parent == package_file("mkm.surrogate", "data"):
+        return f"surrogate/data/{Path(path).name}"
+    return recorded_path(path)
 
 
 def worst_muscles(estimator, data, factor: float, n: int) -> list[dict]:
@@ -173,8 +182,9 @@ def main() -> None:
     if args.train is None:
         model = cached_model(args.kind)
         estimator, train = model.estimator, dict(model.metadata["dataset"])
-        # a cached model names the file as the checkout that trained it saw it
-        train["path"] = recorded_path(train["path"])
+        # a cached model names the file as the checkout that trained it saw it: name the file
+        # this process trained or found it as, a shipped one by its place in the source tree
+        train["path"] = dataset_path(model.data_file or train["path"])
         print(f"{args.kind} as shipped ({train['n_muscles']} muscles), loaded or trained in "
               f"{time.perf_counter() - start:.0f} s")
     else:

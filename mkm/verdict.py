@@ -159,6 +159,7 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
         terms = [f"{what} {100 * float(found[key]):.1f} %" for key, what in
                  (("hysteresis_fraction", "braid friction"), ("creep_fraction", "creep"))
                  if found.get(key)]
+        verb = "is" if len(terms) == 1 else "are"
         models = list(models)
         rung = ("the friction rung of this report has them" if any(map(_is_friction, models))
                 else "add the rung that has them: --models "
@@ -167,7 +168,7 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
             # a table's fit: no noise to judge it by, so no misfit to blame the distance on;
             # what it fitted beyond the static force is no miss of the identified model
             lacks = (f"the {' and '.join(terms)} identified with it, which these static models "
-                     f"lack, {'is' if len(terms) == 1 else 'are'} part of this distance "
+                     f"lack, {verb} part of this distance "
                      f"({rung}), the rest" if terms else
                      "this distance")
             return (f"although the calibration{name} was identified {where}: identify could not "
@@ -177,15 +178,19 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
                     "the report judge it)")
         if misfit.get("judged") and not misfit.get("misfit_branches"):
             lacks = (f"the {' and '.join(terms)} identified with it, which these static models "
-                     "lack, are that distance" if terms else "these static models lack the "
+                     f"lack, {verb} that distance" if terms else "these static models lack the "
                      "identified model's friction and creep")
             fits = "them within their" if len(identified) > 1 else "it within its"
             return (f"although the calibration{name} was identified {where} and fits {fits} "
                     f"noise (chi2/nu {misfit['chi2_per_nu']:.2g}): "
                     f"{lacks} ({rung}; identify's steps.csv has the steps predicted with them)")
+        # a misfit of a fraction of a per cent beside a friction of several: the friction the
+        # static models lack may be most of the distance
+        lacks = (f", and the {' and '.join(terms)} identified with it, which these static "
+                 f"models lack, {verb} part of this distance ({rung})" if terms else "")
         return (f"although the calibration{name} was identified {where}: the model does not "
                 f"fit {'them all' if len(identified) > 1 else 'it'} with one muscle (the "
-                "identification's misfit notes say where)")
+                f"identification's misfit notes say where){lacks}")
     at = ", ".join(f"{r['muscle']['eps']:g}" for r in identified if "muscle" in r)
     head = (f"which points to the muscle, not the model: the calibration{name}, identified on "
             f"the runs at eps {at}, does not carry over to this run")

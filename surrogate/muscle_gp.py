@@ -25,6 +25,7 @@ from mkm.surrogate.muscle_predictor import (
     log_k,
     muscle_values,
     process_inputs,
+    threshold_factor,
 )
 
 
@@ -209,6 +210,10 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
 
     _from_logk = staticmethod(from_log_k)
 
+    #: Whether :meth:`fit` calibrates the threshold process's std on its own errors
+    #: (:meth:`_fit_threshold_std`) before the force's calibration; the default kind does not.
+    own_threshold_std = False
+
     def _force_parts(self, P, A, s_A, Pstar, s_P):
         return force_parts(P, A, s_A, Pstar, s_P, self.linearity_bar_, self.bend_bar_)
 
@@ -226,19 +231,46 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
             mean[rows], std[rows] = leave_one_out(gp, post)
             loo.append((mean, std))
         self.std_scale_, self.std_power_, self.std_reference_ = 1.0, 0.0, 1.0
+        self.threshold_std_scale_, self.threshold_std_power_ = 1.0, 0.0
+        self.threshold_std_reference_ = 1.0
         both = np.zeros(len(first), dtype=bool)
         both[np.intersect1d(*fitted)] = True
         if both.sum() < 5:
             return
         muscle_of_row = np.searchsorted(np.unique(groups), groups)
         rows = both[muscle_of_row]
-        self._fit_std(X[rows, 0], y[rows], {k: val[muscle_of_row][rows] for k, val in v.items()},
-                      *(a[muscle_of_row][rows] for a in (*loo[0], *loo[1])))
+        points = (X[rows, 0], y[rows], {k: val[muscle_of_row][rows] for k, val in v.items()},
+                  *(a[muscle_of_row][rows] for a in (*loo[0], *loo[1])))
+        self._fit_std(*points)
+        if self.own_threshold_std:
+            post, at = self.threshold_posterior_, fitted[1]
+            target = post["y_std"] * np.ravel(self.threshold_gp_.y_train_) + post["y_mean"]
+            self._fit_threshold_std(target, loo[1][0][at],
+                                    loo[1][1][at] * self._calibrated(loo[0][0][at]))
+            self._fit_std(*points)  # the force's calibration again, with the threshold's
+
+    def _fit_threshold_std(self, target, mean, std):
+        """Set ``threshold_std_scale_``, ``threshold_std_power_`` and
+        ``threshold_std_reference_``: the further factor ``c_P max(1, log k_P /
+        m_P,ref)^beta_P`` of the threshold process's std (:func:`threshold_factor`;
+        :func:`coverage_fit` on the leave-one-muscle-out errors of
+        ``log k_P``, ``target``, from their means ``mean`` and their stds ``std`` calibrated as
+        the force's calibration scales both processes). ``log k_P``, the threshold's own
+        end-effect correction, is largest for short, thick-walled muscles at a low braid angle,
+        where its errors are largest for their std: the factor of ``log k_A`` the force's
+        calibration fits for both processes, fitted mostly on pressures far above the threshold
+        where the slope's error dominates, leaves those too narrow."""
+        reference = float(np.median(np.maximum(mean, 1e-3))) if mean.size else 1.0
+        self.threshold_std_reference_ = reference
+        self.threshold_std_scale_, self.threshold_std_power_ = coverage_fit(
+            target - mean, lambda c, beta: std * threshold_factor(mean, c, beta, reference))
 
     def _fit_std(self, P, y, v, m_A, s_A, m_P, s_P):
         """Set ``std_reference_``, ``std_scale_`` and ``std_power_`` from forces ``y`` [N] at
         pressures ``P`` [bar] of muscles ``v`` with ``log k`` means ``m`` and stds ``s``; the
         points both the FE and the model put at zero force say nothing and are left out."""
+        s_P = s_P * threshold_factor(m_P, self.threshold_std_scale_, self.threshold_std_power_,
+                                     self.threshold_std_reference_)
         # sd_A and sd_P* are linear in the std of log k (first order): their gains once
         A, gain_A, Pstar, gain_P = self._from_logk(v, m_A, np.ones_like(s_A), m_P,
                                                    np.ones_like(s_P))
@@ -306,4 +338,6 @@ class MuscleThresholdGP(RegressorMixin, BaseEstimator):
                                float(self.std_reference_), float(self.bend_bar_),
                                float(self.std_rescale_), float(self.std_rescale_power_),
                                float(self.std_rescale_angle_power_),
-                               self.linearity_bar_)
+                               self.linearity_bar_, float(self.threshold_std_scale_),
+                               float(self.threshold_std_power_),
+                               float(self.threshold_std_reference_))

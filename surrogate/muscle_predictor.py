@@ -25,6 +25,10 @@ POSTERIOR_ARRAYS = {"X_scaled": 2, "length_scale": 1, "alpha": 1, "L_inv": 2, "a
                     "noise": 0, "y_mean": 0, "y_std": 0}
 SCALARS = ("std_scale", "std_power", "std_reference", "bend_bar", "std_rescale",
            "std_rescale_power", "std_rescale_angle_power")
+#: The threshold process's own calibration (:class:`~mkm.surrogate.range_gp.RangeThresholdGP`):
+#: neutral (1, 0, 1) where a model has none, as a predictor file without them is read.
+THRESHOLD_SCALARS = {"threshold_std_scale": 1.0, "threshold_std_power": 0.0,
+                     "threshold_std_reference": 1.0}
 
 
 def muscle_values(X, inputs, fixed):
@@ -60,6 +64,13 @@ def calibrated_factor(m_A, c, beta, reference):
     slope process's mean ``m_A``."""
     # k_A > 1 (the caps stretch the shortening); the clip keeps the power finite if not
     return c * (np.maximum(m_A, 1e-3) / reference) ** beta
+
+
+def threshold_factor(m_P, c, beta, reference):
+    """``c max(1, log k_P / m_ref)^beta``: the further factor of the threshold process's std of
+    ``log k_P`` at its mean ``m_P``, widening it where the threshold's own end-effect correction
+    exceeds ``m_ref`` (neutral at ``c = 1, beta = 0``)."""
+    return c * np.maximum(m_P / reference, 1.0) ** beta
 
 
 def effective_shortening(v, m):
@@ -158,8 +169,19 @@ class MusclePredictor:
     std_rescale_power: float
     std_rescale_angle_power: float
     linearity_bar: np.ndarray
+    threshold_std_scale: float = THRESHOLD_SCALARS["threshold_std_scale"]
+    threshold_std_power: float = THRESHOLD_SCALARS["threshold_std_power"]
+    threshold_std_reference: float = THRESHOLD_SCALARS["threshold_std_reference"]
 
     has_std = True
+
+    def calibrated(self, m_A, s_A, m_P, s_P):
+        """The std of ``log k_A`` and ``log k_P`` calibrated: both times ``c (log k_A /
+        m_ref)^beta``, the threshold's also times its own :func:`threshold_factor`."""
+        factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
+        return factor * s_A, factor * s_P * threshold_factor(
+            m_P, self.threshold_std_scale, self.threshold_std_power,
+            self.threshold_std_reference)
 
     def decompose(self, X):
         """``(A, sd_A, P*, sd_P*)`` per row of a validated ``X``."""
@@ -169,9 +191,8 @@ class MusclePredictor:
         """:meth:`decompose`, then the effective shortening of the slope ``k_A eps``."""
         v, m_A, s_A, m_P, s_P = log_k(X, self.inputs, self.fixed, self.z_mean, self.z_scale,
                                       self.slope, self.threshold)
-        factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
-        return (*from_log_k(v, m_A, factor * s_A, m_P, factor * s_P),
-                effective_shortening(v, m_A))
+        sd_A, sd_P = self.calibrated(m_A, s_A, m_P, s_P)
+        return *from_log_k(v, m_A, sd_A, m_P, sd_P), effective_shortening(v, m_A)
 
     def std_parts(self, X):
         """Per row of a validated ``X``: force [N], its std before the rescale [N], and the
@@ -205,7 +226,8 @@ class MusclePredictor:
                "linearity_bar": self.linearity_bar}
         out.update({f"{process}.{name}": np.asarray(getattr(self, process)[name])
                     for process in ("slope", "threshold") for name in POSTERIOR_ARRAYS})
-        out.update({name: np.array(getattr(self, name)) for name in SCALARS})
+        out.update({name: np.array(getattr(self, name)) for name in (*SCALARS,
+                                                                      *THRESHOLD_SCALARS)})
         return out
 
     @classmethod
@@ -232,7 +254,15 @@ class MusclePredictor:
                 got = "missing" if value is None else f"{value.dtype} {value.shape}"
                 raise ValueError(f"predictor array {name} is {got}: expected finite float64 "
                                  f"of shape {shape}")
+        for name in THRESHOLD_SCALARS:
+            value = arrays.get(name)
+            if value is not None and (value.dtype != np.float64 or value.shape != ()
+                                      or not np.isfinite(value)):
+                raise ValueError(f"predictor array {name} is {value.dtype} {value.shape}: "
+                                 "expected a finite float64 of shape ()")
         return cls(tuple(inputs), dict(fixed), arrays["z_mean"], arrays["z_scale"],
                    *({name: arrays[f"{process}.{name}"] for name in POSTERIOR_ARRAYS}
                      for process in ("slope", "threshold")),
-                   *(float(arrays[name]) for name in SCALARS), arrays["linearity_bar"])
+                   *(float(arrays[name]) for name in SCALARS), arrays["linearity_bar"],
+                   *(float(arrays.get(name, default))
+                     for name, default in THRESHOLD_SCALARS.items()))

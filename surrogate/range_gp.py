@@ -9,7 +9,9 @@ rubber ratio ``C01 / C10`` and ``log(D_braid / L0)`` (with ``theta0``, ``eps`` a
 as the default's); the default's linear inputs fitted to the practical muscles miss a fresh
 one by several percent (``docs/guide/surrogates.md``, "Beyond the box").
 The slope, threshold and std are the default's; the std keeps the fit's leave-one-muscle-out
-calibration (:meth:`RangeThresholdGP.calibrate_std`) before the held-out rescale.
+calibration (:meth:`RangeThresholdGP.calibrate_std`) before the held-out rescale, the
+threshold's widened by its own factor (``own_threshold_std``: over the range the threshold's
+end-effect correction reaches several times its median, for short, thick-walled muscles).
 """
 
 from __future__ import annotations
@@ -24,7 +26,6 @@ from mkm.surrogate.gp import posterior_mean_std
 from mkm.surrogate.muscle_gp import MuscleThresholdGP
 from mkm.surrogate.muscle_predictor import (
     MusclePredictor,
-    calibrated_factor,
     effective_shortening,
     from_log_k,
     process_inputs,
@@ -61,9 +62,8 @@ class RangePredictor(MusclePredictor):
 
     def _parts(self, X):
         v, m_A, s_A, m_P, s_P = self.log_k(X)
-        factor = calibrated_factor(m_A, self.std_scale, self.std_power, self.std_reference)
-        return (*from_log_k(v, m_A, factor * s_A, m_P, factor * s_P),
-                effective_shortening(v, m_A))
+        sd_A, sd_P = self.calibrated(m_A, s_A, m_P, s_P)
+        return *from_log_k(v, m_A, sd_A, m_P, sd_P), effective_shortening(v, m_A)
 
 
 class RangeThresholdGP(MuscleThresholdGP):
@@ -75,6 +75,8 @@ class RangeThresholdGP(MuscleThresholdGP):
         # one optimiser restart: on its dataset three gave the same fresh errors (worst and
         # median) in several times the time
         super().__init__(inputs, fixed, restarts, random_state)
+
+    own_threshold_std = True  # MuscleThresholdGP._fit_threshold_std
 
     def _muscle(self, X):
         return range_muscle_values(X, self.inputs, self.fixed)

@@ -96,6 +96,13 @@ def register(subparsers) -> None:
     add_progress_argument(acquire)
     acquire.add_argument("--allow-past-lock", action="store_true",
                          help="record even with eps past the braid lock (refused otherwise)")
+    acquire.add_argument("--calibration", metavar="FILE",
+                         help="the calibration.json of `mkm identify` for this muscle: its "
+                         "identified force, with its 95 %% band and friction, bounds what the "
+                         "load cell may read at each measured pressure, so that a pressure "
+                         "monitor reading low (its regulator then delivers more than it reads, "
+                         "unseen by the over-pressure limit) stops the run, vented (default: "
+                         "no such bound)")
     acquire.set_defaults(func=_acquire)
 
     tare = subparsers.add_parser(
@@ -227,6 +234,13 @@ def _acquire(args) -> int:
 
     config = _config(args, eps=args.eps, pressures_bar=_staircase(args))
     check_out_root(args.out)  # bad --out: one line, exit 2, before the device is opened
+    ceiling = None
+    if args.calibration is not None:
+        from mkm.fem.calibration import Calibration
+        from mkm.identify.band import force_ceiling
+
+        ceiling = force_ceiling(Calibration.load(args.calibration), config.muscle,
+                                config.regulator.max_pressure_bar)
     plot = args.plot
     if plot and not has_display():
         say(args, "warning", "--plot needs a display and none is set (DISPLAY and "
@@ -235,7 +249,7 @@ def _acquire(args) -> int:
     try:
         result = acquire(config, clock=args.clock, out_root=args.out,
                          progress=not args.no_progress, plot=plot,
-                         allow_past_lock=args.allow_past_lock)
+                         allow_past_lock=args.allow_past_lock, ceiling=ceiling)
     except BenchError as exc:  # the bench is held by another process: nothing was touched
         return _failed(args, exc)
     return _kept(result.exit_code,

@@ -27,6 +27,8 @@ the identified muscle's geometry is what is solved (parameters.csv gives the fit
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from mkm.identify import fitting
@@ -141,6 +143,78 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
     variance = variance + (tolerance / np.sqrt(3.0) * np.ravel(force_N)) ** 2
     variance = variance + float(band.get("misfit_rms_N", 0.0)) ** 2
     return Z95 * np.sqrt(variance).reshape(np.shape(force_N))
+
+
+#: the over-force interlock's ceiling is tabulated every this much [bar], up to
+#: :data:`CEILING_TOP` times ``max_pressure_bar`` (a reading beyond 1.1 times it trips the
+#: over-pressure limit; the rest is the monitor's accuracy and its gain error)
+CEILING_STEP_BAR = 0.05
+CEILING_TOP = 1.5
+
+
+def force_ceiling(calibration, muscle, max_pressure_bar: float):
+    """The most the muscle ``calibration`` identified (the calibration.json ``mkm identify``
+    writes) pulls at ``muscle``'s eps, at pressures up to :data:`CEILING_TOP` x
+    ``max_pressure_bar`` [bar]: its identified static force plus the 95 % band
+    (:func:`prediction_band`), with the upper end of its friction's interval (the bench's
+    :data:`mkm.bench.preflight.FRICTION_FRACTION` where identify fitted none): the
+    :class:`mkm.bench.preflight.ForceCeiling` that arms ``mkm acquire``'s over-force
+    interlock. ``ValueError`` in one line for a calibration that holds no identified muscle, or
+    one identified on another tube or rest length than ``muscle`` (a
+    :class:`mkm.fem.muscle.Muscle`) declares."""
+    from mkm.bench.preflight import FRICTION_FRACTION, ForceCeiling
+    from mkm.registry import parse_spec
+
+    found = identified_entry(calibration)
+    if found is None or "band" not in found[1]["identified"]:
+        raise ValueError(f"--calibration {calibration.path} holds no muscle mkm identify "
+                         "identified with its prediction band: expected the calibration.json "
+                         "of `mkm identify RUNS --out DIR` for this muscle")
+    key, entry = found
+    record = entry["identified"]
+    fitted = {p["parameter"]: p.get("value") for p in record.get("parameters", [])
+              if p.get("status") == "fitted"}
+    names = [name for name in ("D0_mm", "t0_mm", "L0_mm") if name not in fitted]
+
+    def other(run_muscle: dict) -> list[str]:  # what this run's muscle declares otherwise
+        return [name for name in names if name in run_muscle and not math.isclose(
+            float(run_muscle[name]), float(getattr(muscle, name)), rel_tol=1e-6)]
+
+    muscles = [r["muscle"] for r in record.get("runs", []) if r.get("muscle")]
+    if muscles and all(other(m) for m in muscles):
+        differ = other(muscles[0])
+        raise ValueError(
+            f"--calibration {calibration.path} identified a muscle of "
+            + ", ".join(f"{name}={muscles[0][name]:g}" for name in differ)
+            + "; the configuration declares "
+            + ", ".join(f"{name}={getattr(muscle, name):g}" for name in differ)
+            + ": expected the identification of the muscle this run holds")
+    tube = identified_tube(calibration) or (muscle.D0_mm, muscle.t0_mm)
+    L0_mm = fitted.get("L0_mm") or muscle.L0_mm
+    spec = parse_spec(key.partition("-")[0]).with_params(**{
+        k: v for k, v in entry.get("model_params", {}).items()
+        if k not in ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "L0_mm")},
+        L0_mm=float(L0_mm))
+    pressure_bar = np.arange(0.0, CEILING_TOP * max_pressure_bar + CEILING_STEP_BAR / 2,
+                             CEILING_STEP_BAR)
+    model = spec.build(calibration)
+    predicted = model.predict(pressure_bar, tube[0], tube[1], muscle.eps)
+    force = np.asarray(predicted.force_N, dtype=float)
+    band = prediction_band(spec, calibration, force, pressure_bar, tube[0], tube[1],
+                           muscle.eps)
+    if band is None:
+        raise ValueError(f"--calibration {calibration.path}: no prediction band for its "
+                         f"identified model {key}")
+    friction = next((p["value"] if p.get("ci_high") is None else p["ci_high"]
+                     for p in record.get("parameters", [])
+                     if p.get("parameter") == "hysteresis_fraction"
+                     and p.get("value") is not None), None)
+    # where the model gives no valid force (past its lock) nothing bounds the force
+    most = np.where(np.asarray(predicted.valid, dtype=bool) & np.isfinite(force + band),
+                    np.maximum(force, 0.0) + band, np.inf)
+    return ForceCeiling(tuple(map(float, pressure_bar)), tuple(map(float, most)),
+                        float(FRICTION_FRACTION if friction is None else friction),
+                        f"the muscle identified in {calibration.path} ({key})")
 
 
 def check_heldout(result, run_dir, out_dir) -> dict:

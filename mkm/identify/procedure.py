@@ -418,6 +418,24 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             warnings.simplefilter("always")
             free, free_boot, rubber, free_terms, free_source = _rubber_ratio(
                 source, fe, runs, best, seed, braid)
+            again = _one_scale_again(free_source, source, runs, best, free, rubber)
+            if again is not None:
+                # the fit at the assumed ratio from the free fit's optimum, on its source,
+                # fits better: the ratio freed would take the credit for the correction
+                notify("the fit at the assumed rubber ratio fits better from the optimum with "
+                       "the ratio free: fitted from there, and the ratio tested again")
+                notes.append(f"the fit at {said} rubber ratio, started again from the optimum "
+                             f"with the ratio free (C01/C10 {rubber['ratio_C01_over_C10']:.3g}) "
+                             f"and the FE model's correction taken there, fits better (chi2/nu "
+                             f"{goodness.assess(runs, best).reduced:.3g} -> "
+                             f"{goodness.assess(runs, again).reduced:.3g}): kept (far outside its "
+                             "training the surrogate's error changes fast with the parameters: "
+                             "the correction taken at the first optimum did not hold at it)")
+                best, source = again, free_source
+                boot = bootstrap(best, seed=seed, **instrument_terms(runs),
+                                 uniform_terms=shared_terms(source, runs, best))
+                free, free_boot, rubber, free_terms, free_source = _rubber_ratio(
+                    source, fe, runs, best, seed, braid)
         notes += _outside_box(caught)
         if (rubber.get("box_stopped") and rubber["edge_chi2_improvement"] > RATIO_LIKELIHOOD
                 and goodness.assess(runs, best).misfit):
@@ -475,8 +493,9 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                               "the prediction band's rubber-ratio term is extrapolated there")
     fitness = goodness.assess(runs, best)
     fitness.ratio_freed = ratio_freed(rubber)
-    # a group whose fit did not converge is not offered as what the fit lacks
-    fitness.shown = tuple(g for g in fitness.shown if g not in given_up)
+    # a group whose fit did not converge, or that was fitted and the BIC dropped, is not
+    # offered as what the fit lacks: asking for it again would repeat this fit
+    fitness.shown = tuple(g for g in fitness.shown if g not in given_up and g not in groups)
     if fitness.misfit and isinstance(source, Corrected) and surrogate_misfit(source, fe, runs,
                                                                              best):
         notify(f"the fit on the surrogate misfits where {fe.name} would not: identifying again "
@@ -1189,6 +1208,27 @@ def _improvement(one_scale, free) -> float:
     """The likelihood ratio of the fit with C01's share free (``free``) over the fit at one
     ratio (``one_scale``), in units of the free fit's residual variance."""
     return (one_scale.rss - free.rss) / (free.rss / max(free.n - len(free.names), 1))
+
+
+def _one_scale_again(source, first, runs, best, free, rubber):
+    """The fit at the assumed rubber ratio started again from the optimum of the fit with the
+    ratio free (``free``, on ``source``: the surrogate with the FE model's correction taken
+    again at that optimum), where the runs do not separate C10 and C01 and it fits better than
+    ``best`` (on ``first``, the correction taken at the surrogate's optimum) by more than
+    :data:`RATIO_LIKELIHOOD` (in the free fit's residual variance); else None, also where the
+    free fit ran on ``first`` itself. Far outside its training a surrogate's error
+    changes fast with the parameters: the FE model's correction taken at the first optimum
+    may not hold there, and the free fit, corrected again at its own, fits better for that,
+    not for its ratio."""
+    if (rubber.get("separated") or free is best or source is first
+            or "ratio_C01_over_C10" not in rubber):
+        return None
+    try:
+        again = fitting.fit(source, runs, best.names,
+                            {**free.values, "c01_fraction": fitting.assumed_share(best.values)})
+    except RuntimeError:  # no better fit found: the first stands
+        return None
+    return again if _improvement(best, again) > RATIO_LIKELIHOOD else None
 
 
 def _rubber_ratio(source, fe, runs, best, seed, braid):

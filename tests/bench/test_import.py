@@ -1509,13 +1509,13 @@ def test_sample_rate_times_the_rows_of_a_table_without_a_clock(counter, tmp_path
     steps = run.steps
     np.testing.assert_allclose(steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
     # each hold timed in seconds: it starts where the ramp onto it enters its 0.03 bar band
-    # (1, 1 and 0.5 bar/s) and ends where the ramp off it leaves (1, 0.5 and 2.5 bar/s), to
-    # two samples
-    band_bar = 0.03
+    # (1, 1 and 0.5 bar/s) and ends where the ramp off it (1, 0.5 and 2.5 bar/s) leaves its
+    # level, by 0.005 bar (a noiseless record's floor), to two samples
+    band_bar, floor_bar = 0.03, 0.005
     np.testing.assert_allclose(steps["start_s"], np.array([6.0, 17.0, 28.0])
                                - band_bar / np.array([1.0, 1.0, 0.5]), atol=0.02)
     np.testing.assert_allclose(steps["end_s"], np.array([16.0, 27.0, 38.0])
-                               + band_bar / np.array([1.0, 0.5, 2.5]), atol=0.02)
+                               + floor_bar / np.array([1.0, 0.5, 2.5]), atol=0.02)
     # a rate with its unit is converted
     (fast,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--sample-rate", "1kHz")
     assert fast.meta.imported_from["sample_rate_hz"] == 1000.0
@@ -1890,9 +1890,34 @@ def test_a_staircase_in_time_gives_the_bench_steps(tmp_path, mkm_cli):
     assert steps["direction"].tolist() == ["up", "up", "up", "down", "down"]
     assert steps["set_pressure_bar"].tolist() == pytest.approx(levels, abs=0.01)
     assert steps["settled"].all()  # 0.2 N of noise passes the bench's settle test
+    assert "settle_scaled" not in run.meta.imported_from  # as the packaged limits judge it
     for step in steps.itertuples():
         hold = (t >= step.start_s + step.settle_s - 1e-9) & (t <= step.end_s + 1e-9)
         assert step.force_N_mean == pytest.approx(truth[hold].mean(), abs=0.15)
+
+
+def test_a_large_load_cells_noise_still_settles_its_holds(tmp_path, mkm_cli):
+    # a 60 mm muscle's kilonewtons on a 10 kN cell spreading 3 N at rest: under the packaged
+    # [settle] limits (1.5 N, 1 N/s) no hold settled and mkm identify refused the run ("has no
+    # settled step"); judged within three times the cell's spread at rest, each one settles
+    levels = [0.5, 1.0, 1.5, 1.0, 0.5]
+    frame, t, truth = _staircase(levels, 3)
+    rng = np.random.default_rng(60)
+    frame["F"] = 10.0 * truth + rng.normal(0.0, 3.0, t.size)
+    path = tmp_path / "large.csv"
+    frame.to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    steps = run.steps
+    assert steps["settled"].all()
+    scaled = run.meta.imported_from["settle_scaled"]
+    assert scaled["rest_std_N"] == pytest.approx(3.0, rel=0.25)  # 50 samples at rest
+    assert scaled["max_force_std_N"] == pytest.approx(3 * scaled["rest_std_N"])
+    assert scaled["max_force_slope_N_per_s"] == pytest.approx(scaled["factor"])
+    assert (f"the load cell spreads {scaled['rest_std_N']:.3g} N at rest: each hold judged "
+            f"settled within {scaled['max_force_std_N']:.3g} N and ") in err
+    for step in steps.itertuples():  # 3 N over 80 samples: a standard error of 0.34 N
+        hold = (t >= step.start_s + step.settle_s - 1e-9) & (t <= step.end_s + 1e-9)
+        assert step.force_N_mean == pytest.approx(10.0 * truth[hold].mean(), abs=1.5)
 
 
 @pytest.mark.parametrize("timed", [True, False])

@@ -497,6 +497,40 @@ def test_a_signal_just_before_the_signals_are_held_is_the_runs_stop(config, tmp_
     assert load_run(result.path).commands["purpose"].iloc[-1] == "vent"
 
 
+def test_a_second_ctrl_c_as_the_first_ones_stop_is_taken_is_in_the_record(config, tmp_path):
+    # the first Ctrl-C stops at the next safe point; a second one that came as that stop was
+    # taken, before the signals were held, was dropped from the record (its stop already had
+    # a signal), which said only `stopped by Ctrl-C (SIGINT) at a safe point; vented`
+    backend = SimBackend(config)
+    read = backend.read
+
+    def first_ctrl_c(n, timeout):
+        block = read(n, timeout)
+        if block.first_index == 30:
+            signal.raise_signal(signal.SIGINT)  # its handler runs before the read returns
+        return block
+
+    backend.read = first_ctrl_c
+    run = BenchRun(config, backend, tmp_path, handle_signals=True, notify=lambda m: None)
+    hold, sent = run.signals.hold, []
+
+    def second_as_it_is_taken():
+        if not sent:
+            sent.append(signal.SIGINT)
+            signal.raise_signal(signal.SIGINT)  # the handler raises before the hold
+        hold()
+
+    run.signals.hold = second_as_it_is_taken
+    result = run.execute()
+    assert sent == [signal.SIGINT]
+    assert result.status == "aborted" and result.exit_code == 128 + signal.SIGINT
+    assert result.reason == ("stopped by Ctrl-C (SIGINT) at a safe point; SIGINT received "
+                             "meanwhile; vented"), result.reason
+    loaded = load_run(result.path)
+    assert loaded.meta.reason == result.reason and loaded.meta.vent_check["verified"]
+    assert loaded.commands["purpose"].iloc[-1] == "vent" and loaded.commands["ok"].iloc[-1]
+
+
 def test_a_second_signal_while_the_first_is_taken_cannot_skip_the_vent(config, tmp_path):
     # SIGTERM arrives just before the signals are held (the run's stop), then SIGHUP while that
     # first signal is taken, before the hold: the second escaped the run as a traceback, with

@@ -1,8 +1,10 @@
 """Steps from a lab's time series (:mod:`mkm.bench.series`): the pieces on their own."""
 
 import numpy as np
+import pytest
 
 from mkm.bench import series
+from mkm.bench.config import load_config
 
 
 def _staircase(rate_hz: float, seed: int = 0):
@@ -65,3 +67,28 @@ def test_a_slow_ramp_is_a_ramp_and_a_staircase_a_staircase():
             assert abs(series.vented_offset(t, p + 0.6) - 0.6) < 0.006
         t, p = _staircase(rate_hz)
         assert series.shape(t, p) == "staircase"
+
+
+def test_a_hold_leaves_out_the_next_steps_rise_within_its_band():
+    # a 60 mm muscle at 0.1 bar steps (4256 N/bar, a 3 N cell; the regulator's time constant
+    # 0.4 s at 10 Hz): the first sample of each rise, 0.022 bar up, lies within the plateau's
+    # 0.03 bar band and pulled 95 N into the hold's last sample, its spread 14 N instead of 3
+    rng = np.random.default_rng(60)
+    levels = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5]
+    set_bar = np.repeat(levels, 80)
+    p = np.zeros(set_bar.size)
+    for k in range(1, p.size):
+        p[k] = set_bar[k] + (p[k - 1] - set_bar[k]) * np.exp(-0.1 / 0.4)
+    t = np.arange(p.size) * 0.1
+    truth = 4256.0 * p
+    force = truth + rng.normal(0.0, 3.0, t.size)
+    pressure = p + rng.normal(0.0, 0.002, t.size)
+    steps, step_of = series.staircase_steps(t, pressure, force, load_config())
+    assert [round(s.set_pressure_bar, 1) for s in steps] == levels[1:]
+    for k, step in enumerate(steps[:-1]):  # the last one ends with the record
+        assert 2.0 < step.force_N_std < 4.5, step
+        plateau = step_of == k
+        assert set_bar[plateau].max() == set_bar[plateau].min()  # none of the next step's rise
+        hold = (t >= step.start_s + step.settle_s - 1e-9) & (t <= step.end_s + 1e-9)
+        # 3 N over some 40 samples: a standard error of 0.5 N
+        assert step.force_N_mean == pytest.approx(truth[hold].mean(), abs=2.0)

@@ -72,6 +72,12 @@ def start_run(tmp_path, until="samples"):
     pytest.fail("no samples within 30 s")
 
 
+def vented(folder) -> bool:
+    """The run in ``folder`` has written its vent after a pressure step (commands.csv)."""
+    commands = (folder / "commands.csv").read_text()
+    return ",step\n" in commands and commands.rstrip().endswith(",vent")
+
+
 def assert_every_flushed_sample(run, flushed):
     assert len(run.samples) >= flushed
     np.testing.assert_array_equal(run.samples["sample"], np.arange(len(run.samples)))
@@ -90,21 +96,31 @@ def test_stop_signal_vents_within_0_2_s_and_records(tmp_path, name, times):
     proc, folder, flushed = start_run(tmp_path, until="step")  # pressurised when signalled
     signum = getattr(signal, name)
     sent = time.time()
-    for _ in range(times):
+    proc.send_signal(signum)
+    if times == 2:
+        # the second once the first one's vent is on disk: it then comes while the run stops
+        # (its vent check lasts a second or more). Sent 20 ms after the first, on a loaded
+        # machine it merged with it (one signal of a kind is pending at a time, in the kernel
+        # and in Python's handler) or, a Ctrl-C, came after the first one's safe point: three
+        # outcomes, a flake in 3 of 8 loops. A second Ctrl-C before that point is held in
+        # test_a_second_ctrl_c_before_the_safe_point_vents_at_once
+        deadline = time.monotonic() + 10
+        while not vented(folder) and time.monotonic() < deadline:
+            time.sleep(0.01)
         proc.send_signal(signum)
-        time.sleep(0.02)
     stdout, stderr = proc.communicate(timeout=20)
     assert proc.returncode == 128 + signum, stderr
     assert stdout.strip().splitlines()[-1] == str(folder)
     run = load_run(folder)
     assert run.status == "aborted" and run.meta.stop_signal == name
     assert run.meta.stop_signal_number == signum
-    if name == "SIGINT" and times == 1:
-        assert "at a safe point; vented" in run.reason
+    if name == "SIGINT":
+        assert run.reason.startswith("stopped by Ctrl-C (SIGINT) at a safe point; vented")
     else:
-        assert name in run.reason and "at once; vented" in run.reason
-    if name != "SIGINT" and times == 2:  # the second is noted, the first one's stop goes on
-        assert f"{name} received" in run.reason, run.reason
+        assert run.reason.startswith(f"stopped by {name} at once; vented"), run.reason
+    if times == 2:  # the second is noted, the first one's stop goes on
+        assert run.reason.endswith(f"; {name} received while stopping: noted, the vent and the "
+                                   "record went first"), run.reason
     assert_every_flushed_sample(run, flushed)
     last = run.commands.iloc[-1]
     assert last["purpose"] == "vent" and last["ok"] and last["command_bar"] == 0.0
@@ -168,12 +184,19 @@ def test_console_close_is_a_stop_that_waits_for_the_vent():
     interrupted = []
     guard = StopSignals(interrupt_main=interrupted.append)
     assert guard.on_console_event(CTRL_C_EVENT) is False  # Python raises SIGINT itself
-    threading.Timer(0.2, guard.done).start()
-    start = time.monotonic()
+    done_at = []
+
+    def the_run_recorded():
+        done_at.append(time.monotonic())
+        guard.done()
+
+    threading.Timer(0.2, the_run_recorded).start()
     assert guard.on_console_event(CTRL_CLOSE_EVENT) is True
-    # released by done() at 0.2 s, not by the hold's limit (a loaded machine's timer may be
-    # late, never by seconds)
-    assert 0.15 < time.monotonic() - start < CONSOLE_HOLD_S - 0.5
+    returned = time.monotonic()
+    # released by done(), not before it nor by the hold's limit (a loaded machine's timer may
+    # be late, never by seconds); timed from the timer's start, a pause of this process
+    # between that start and the clock's reading under load gave 0.14 s where 0.2 s was least
+    assert done_at and done_at[0] <= returned < done_at[0] + CONSOLE_HOLD_S - 0.5
     assert interrupted == [getattr(signal, "SIGBREAK", signal.SIGTERM)]
     assert guard.console_event == "console closed"
 
@@ -222,7 +245,8 @@ def test_the_console_handler_is_registered_called_through_ctypes_and_removed(win
         caller = threading.Thread(target=lambda: returned.append(handler(CTRL_CLOSE_EVENT)))
         with pytest.raises(StopSignal) as stop:  # Windows' thread stops the main thread
             caller.start()
-            deadline = time.monotonic() + 2.0
+            # ended by the StopSignal as soon as that thread runs; the bound is a net only
+            deadline = time.monotonic() + 30.0
             while time.monotonic() < deadline:
                 time.sleep(0.01)
         assert stop.value.detail == "console closed"
@@ -438,6 +462,35 @@ def test_a_signal_that_would_end_the_process_vents_and_records(config, tmp_path,
     assert signal.getsignal(signum) == signal.SIG_DFL  # given back after the run
 
 
+def test_a_second_ctrl_c_before_the_safe_point_vents_at_once(config, tmp_path):
+    # the first Ctrl-C stops at the next block's end; a second one before it (both arrive
+    # while a block is read, their handlers run before the read returns) stops at once
+    from mkm.bench.run import BenchRun
+    from mkm.bench.sim import SimBackend
+
+    backend = SimBackend(config)
+    original = backend.read
+
+    def read(n, timeout):
+        block = original(n, timeout)
+        if block.first_index == 30:  # on the 0.5 bar step (the tare's 2 s are 20 samples)
+            signal.raise_signal(signal.SIGINT)
+            signal.raise_signal(signal.SIGINT)
+        return block
+
+    backend.read = read
+    result = BenchRun(config, backend, tmp_path, handle_signals=True,
+                      notify=lambda m: None).execute()
+    assert result.exit_code == 128 + signal.SIGINT and result.status == "aborted"
+    assert result.reason == "stopped by SIGINT (second Ctrl-C) at once; vented"
+    run = load_run(result.path)
+    assert run.meta.stop_signal == "SIGINT" and run.meta.stop_signal_number == signal.SIGINT
+    acquired = run.samples[run.samples["phase"] != "vent"]
+    assert list(acquired["sample"]) == list(range(31))  # the block in hand kept
+    assert (run.commands["command_bar"] > 0).any() and run.meta.vent_check["verified"]
+    assert backend.commands[-1][1] == 0.0 and run.commands["purpose"].iloc[-1] == "vent"
+
+
 def test_a_signal_as_a_pressure_write_returns_leaves_it_in_the_books(config, tmp_path):
     # SIGTERM arrives as the write of the 0.5 bar step returns: the stop cut the books, the
     # device holding 0.5 bar while commands.csv called the write failed and the run's last
@@ -590,3 +643,72 @@ def test_a_signal_handler_writes_nothing_the_loop_says_its_notice(config, tmp_pa
     notice = FIRST_INTERRUPT if name == "SIGINT" else SUSPEND_REFUSED
     assert said.count(notice) == 1
     assert result.status == ("aborted" if name == "SIGINT" else "complete"), result.reason
+
+
+FAULTING_RUN = """
+import signal, sys
+from mkm.bench.config import load_config
+from mkm.bench.run import BenchRun
+from mkm.bench.sim import SimBackend
+
+config = load_config(sys.argv[1])
+backend = SimBackend(config)
+read = backend.read
+
+def read_then_fault(n, timeout):
+    block = read(n, timeout)
+    if block.first_index >= 20 and any(b > 0 for _, b in backend.commands):  # pressurised
+        signal.raise_signal(getattr(signal, sys.argv[2]))  # as a fault in a driver raises it
+    return block
+
+backend.read = read_then_fault
+BenchRun(config, backend, sys.argv[3], notify=lambda m: None).execute()
+"""
+
+
+@pytest.mark.slow  # starts a process that a fatal signal ends
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX fatal signals")
+@pytest.mark.parametrize("name, words", [("SIGSEGV", "Segmentation fault"),
+                                         ("SIGBUS", "Bus error"),
+                                         ("SIGFPE", "Floating point exception"),
+                                         ("SIGILL", "Illegal instruction")])
+def test_a_fatal_signal_leaves_its_trace_in_the_run_folder_and_the_next_command_says_so(
+        tmp_path, capsys, name, words):
+    # a fault in a driver or an extension (SIGSEGV, SIGBUS, SIGFPE, SIGILL) ends the process
+    # with the regulator holding its pressure; the next command vented and called the run
+    # killed, with nothing to say why: no trace was written anywhere
+    config = write_config(tmp_path)
+    proc = subprocess.run([sys.executable, "-c", FAULTING_RUN, str(config), name,
+                           str(tmp_path / "runs")], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == -getattr(signal, name), proc.stderr
+    (folder,) = (tmp_path / "runs").iterdir()
+    trace = (folder / "fatal-error.txt").read_text()
+    assert trace.startswith(f"Fatal Python error: {words}\n"), trace
+    assert "in read_then_fault" in trace  # the Python stack where it failed, every thread's
+    assert load_run(folder).problems[0] == (
+        f"the run's process died of a fatal error ({words}, {name}) without closing its record: "
+        f"the trace of its threads is in {folder / 'fatal-error.txt'}")  # mkm report says so
+    assert main(["vent", "--config", str(config)]) == 0
+    err = capsys.readouterr().err
+    assert "ended without venting; its last commanded pressure was 0.5 bar" in err
+    said = (f"its process died of a fatal error ({words}, {name}): the trace of its threads "
+            f"is in {folder / 'fatal-error.txt'}")
+    assert said in err, err
+    run = load_run(folder)
+    assert run.status == "killed", run.reason
+    pid = run.meta.process.pid
+    assert run.reason.startswith(f"its process (pid {pid}) died of a fatal error "
+                                 f"({words}, {name}), at about "), run.reason
+    assert run.reason.endswith(f"; the trace of its threads is in {folder / 'fatal-error.txt'}")
+
+
+def test_a_run_that_ends_leaves_no_fatal_trace_and_gives_faulthandler_back(config, tmp_path):
+    import faulthandler
+
+    from mkm.bench.run import acquire
+
+    enabled = faulthandler.is_enabled()
+    result = acquire(config, out_root=tmp_path, notify=lambda m: None)
+    assert result.status == "complete", result.reason
+    assert not (result.path / "fatal-error.txt").exists()
+    assert faulthandler.is_enabled() == enabled

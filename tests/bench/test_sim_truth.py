@@ -291,7 +291,7 @@ def test_a_sliding_braid_truth_is_the_fe_models_sliding_sleeve(config):
 @pytest.mark.parametrize("truth, message", [
     ({"braid": "glued"}, "sim.truth.braid='glued' is invalid: expected one of bonded, sliding"),
     ({"loadcell_gain": 1.5}, "sim.truth.loadcell_gain=1.5 is invalid: expected 0.9 to 1.1"),
-    ({"monitor_gain": 0.5}, "sim.truth.monitor_gain=0.5 is invalid: expected 0.9 to 1.1"),
+    ({"monitor_gain": 0.5}, "sim.truth.monitor_gain=0.5 is invalid: expected 0.75 to 1.25"),
     ({"monitor_offset_bar": -1.0}, "sim.truth.monitor_offset_bar=-1 is invalid: expected -0.5 "
                                    "to 0.5 bar"),
     ({"t0_mm": 16.0}, "sim.truth.t0_mm=16 is too thick for D0_mm=30"),

@@ -334,3 +334,27 @@ def test_a_run_without_a_kept_step_is_said_so_not_that_no_model_is_valid():
         assert verdict("Run 1 (eps 5.0 %, simulated)", summary, NAMES, 0.02) == (
             "Run 1 (eps 5.0 %, simulated): no step was kept, so no model can be scored: the "
             "run ended before its first step was recorded (its status and signals below say why).")
+
+
+def test_a_misfit_names_the_friction_it_fitted_beside_the_static_models_distance():
+    """A 5 mm latex muscle's two imported records (braid friction 3.0 %) identified at chi2/nu
+    3.5, a misfit of 0.12 % at worst: the report's static FE model is 3.08 % off its runs, which
+    the verdict put down to the muscle alone; the friction the static models lack is most of it,
+    and the friction rung follows the runs within 0.13 %."""
+    identified = [{"run": f"r{k}", "path": f"runs/r{k}", "muscle": {"eps": eps}}
+                  for k, eps in ((1, 0.0), (2, 0.1))]
+    fit = {"misfit": {"judged": True, "chi2_per_nu": 3.5, "misfit_branches": ["r2 loading"]},
+           "parameters": [{"parameter": "hysteresis_fraction", "value": 0.030028,
+                           "status": "fitted"}]}
+    static = ["eq2", "thickwall", "axisym", "surrogate"]
+    assert muscle_advice("runs/r1", identified, "calibration.json", fit=fit,
+                         models=static) == (
+        "although the calibration (calibration.json) was identified on this run with the "
+        "others: the model does not fit them all with one muscle (the identification's misfit "
+        "notes say where), and the braid friction 3.0 % identified with it, which these static "
+        "models lack, is part of this distance (add the rung that has them: --models "
+        "eq2,thickwall,axisym,surrogate,friction)")
+    # the within-noise sentence's verb agrees with one term
+    within = {**fit, "misfit": {"judged": True, "chi2_per_nu": 0.11, "misfit_branches": []}}
+    assert ("the braid friction 3.0 % identified with it, which these static models lack, is "
+            "that distance (") in muscle_advice("runs/r1", identified, fit=within, models=static)

@@ -169,8 +169,8 @@ def test_a_std_beyond_any_force_of_the_muscle_is_no_answer(range_model):
 def test_auto_keeps_it_out_of_its_worst_fresh_muscle_and_says_why(range_model):
     # The worst muscle of seed 20261701 (docs/measured/surrogate_range_gp_pooled.json's
     # worst_muscles; theta0 17 deg, eps at 86 % of the braid lock, L0 5.6 D0): the range
-    # surrogate gives 90.33 N at 8 bar where the fine FE gives 96.11 N, 6.0 % off, 2.0 of its
-    # std. Asked for 5 %, auto answers with an FE mesh (its bound, 6 std, is 19.5 %) and said
+    # surrogate gives 90.33 N at 8 bar where the fine FE gives 96.11 N, 6.0 % off, 2.1 of its
+    # std. Asked for 5 %, auto answers with an FE mesh (its bound, 6 std, is 18.5 %) and said
     # only the mesh's bound; it names the surrogate's and where it errs most.
     from mkm.auto import RANGE_PREDICTOR, RANGE_WORST, explain
     from mkm.registry import build_spec
@@ -183,8 +183,33 @@ def test_auto_keeps_it_out_of_its_worst_fresh_muscle_and_says_why(range_model):
     pred = build_spec("auto:tolerance=0.05", **muscle).predict(P, D0, t0, eps)
     assert set(pred.extras["model_used"]) <= {"axisym-coarse", "axisym-medium", "axisym-fine"}
     assert RANGE_PREDICTOR not in explain(pred)
-    assert ("the practical range's surrogate's own bound here is up to 19.5% (6 x its std), "
+    assert ("the practical range's surrogate's own bound here is up to 18.5% (6 x its std), "
             f"where it errs most: {RANGE_WORST}") in explain(pred)
+
+
+@pytest.mark.slow
+def test_its_std_holds_a_thick_walled_muscles_threshold_miss(range_model):
+    # A fresh muscle of the practical range (seed 20263515, muscle 33: the wall 0.295 D0, L0 5.5
+    # D0, theta0 18.3 deg): the fine FE starts pulling at 5.50 bar (the line through its sweep
+    # crosses 0 N at 5.501 bar; the coarse and medium meshes within 0.002 bar), the surrogate at
+    # 5.285 bar, so it is 81-90 N high from 5.5 bar up. With the threshold's std scaled as the
+    # slope's (by log k_A) those were 5.3-10.4 of its std (the threshold 11 of its std low):
+    # log k_P, the threshold's own correction, is large here (0.27; median 0.04), and the
+    # threshold's errors grow with it. Widened by it, the miss is 4.2-5.2 std: within the 6 std
+    # auto bounds this surrogate by at every point, not a 3-std miss (a tail muscle still).
+    from mkm.auto import RANGE_STD_FACTOR
+    from mkm.registry import build_spec
+
+    muscle = {"L0_mm": 100.429976, "theta0_deg": 18.307672, "C10_MPa": 0.242701,
+              "C01_MPa": 0.312399}
+    # mkm fem solve --model axisym:mesh=fine,L0_mm=100.429976,... --pressures 5.5:8:0.5
+    P, fe_N = np.arange(5.5, 8.01, 0.5), np.array([1.228, 189.134, 379.043, 569.655,
+                                                    760.640, 951.853])
+    pred = build_spec("surrogate:kind=muscle-gp-range", **muscle).predict(
+        P, 18.10962, 5.343185, 0.117403)
+    miss_in_std = np.abs(pred.force_N - fe_N) / pred.extras["force_std_N"]
+    assert np.abs(pred.force_N - fe_N) == pytest.approx(88.0, abs=8.0)  # the threshold's shift
+    assert (miss_in_std <= RANGE_STD_FACTOR).all(), miss_in_std
 
 
 @pytest.mark.slow
