@@ -317,6 +317,21 @@ def force_bounds_N(config, n: int = 1001) -> tuple[np.ndarray, np.ndarray, np.nd
     return pressure_bar, least, most
 
 
+def bound_assumes(config) -> str:
+    """What :func:`force_bounds_N`'s lower bound takes of the muscle's braid and rubber, and how
+    to widen it: a muscle with a steeper braid or a stiffer rubber is slack to a higher
+    pressure, and a live load cell then holds its code where the bound says the force moves."""
+    m, tol = config.muscle, config.muscle.tolerances
+    lock = muscle_lock(config)
+    angle = (f"theta0 {lock.theta0_deg:.4g} +- {tol.theta0_deg:g} deg"
+             + ("" if m.theta0_deg is not None else f" ({lock.source}: [muscle] declares none)"))
+    rubber = ("its declared rubber" if m.C10_MPa is not None
+              else "Silastic S's rubber ([muscle] declares none)")
+    return (f"the bound takes {angle} and {rubber}; a muscle with a steeper braid or a stiffer "
+            "rubber is slack to a higher pressure: if the cell is sound, declare the muscle's "
+            "theta0_deg and C10_MPa in [muscle] or widen [muscle.tolerances] theta0_deg")
+
+
 #: A muscle pulling less than this share of its force at its rest length, at the highest planned
 #: pressure, is slack there: the thick-wall model and the FE model part by about as much near
 #: the threshold (a 10 mm tube with a 1.5 mm wall at eps 0.28 and 6 bar: 1.6 N and none, of

@@ -62,6 +62,7 @@ from mkm.bench.preflight import (
     FRICTION_FRACTION,
     ForceCeiling,
     adc_step_N,
+    bound_assumes,
     force_bounds_N,
 )
 from mkm.bench.recorder import Recorder
@@ -557,7 +558,8 @@ class Acquisition:
                         + ("" if self.electronic else
                            ", or whether a reading was typed before the manometer settled (the "
                            "pressure still on its way, the muscle below it): type each once it "
-                           "holds still"))
+                           "holds still")
+                        + f"; {bound_assumes(self.config)}")
         return self.unmoved
 
     def _bounds(self) -> tuple:
