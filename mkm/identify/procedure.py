@@ -522,6 +522,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         terms = {**terms, "frame": {
             "kind": "one-sided", "what": f"a frame of {fitness.frame['stiffness_N_per_mm']:.3g} "
             "N/mm fitted (linearised)", "shift": fitness.frame["shift"]}}
+    if lag := lag_hint(source, runs, best, fitness):
+        # so does a lag the ramps show: without it the fit takes its loop for friction
+        terms = {**terms, "lag": {"kind": "one-sided", "what": f"a lag of {lag['tau_s']:.3g} "
+                                  "s fitted (linearised)", "shift": lag.pop("shift")}}
     boot = extend(boot, best, terms)
     if "shift" in terms.get("creep", {}):
         notes.append(f"the intervals hold a creep of up to {100 * UNTIMED_CREEP_FRACTION:g} % "
@@ -541,7 +545,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
                      "is cut there")
     notes += terms_at_bounds(runs, best)
-    cautions += [lag] if (lag := lag_hint(source, runs, best, fitness)) else []
+    cautions += [lag] if lag else []
     notes += [c["said"] for c in cautions]
     offset = best.values.get("pressure_offset_bar")
     if "pressure_offset_bar" in best.names and fitting.at_edge(
@@ -834,8 +838,9 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
     pressure at every force, where friction's grows with the force: a fit without the lag
     takes it for friction, and its chi-square may stay within the noise. Named (an instrument
     warning: its record, note ``said`` and ``verdict``) where the lag lowers the chi-square by
-    :data:`LAG_CHI2`; else None. A held step has caught up with its tubing: only ramps see a
-    lag."""
+    :data:`LAG_CHI2`, with the refit's ``shift`` of every fitted parameter, the model-form term
+    ``lag`` of the intervals; else None. A held step has caught up with its tubing: only ramps
+    see a lag."""
     ramps = [run for run in runs if run.ramp_rate_bar_per_s is not None]
     if not fitness.judged or not ramps:
         return None
@@ -860,8 +865,8 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
         return None
     rate = max(float(np.max(np.abs(run.ramp_rate_bar_per_s))) for run in ramps)
     friction, record = "", {}
+    step = _step(best, best.residual_N + tau_s / LAG_STEP_S * column)
     if "hysteresis_fraction" in best.names:
-        step = _step(best, best.residual_N + tau_s / LAG_STEP_S * column)
         fitted = best.values["hysteresis_fraction"]
         with_it = max(fitted + float(step[best.names.index("hysteresis_fraction")]), 0.0)
         friction = (f"; the fitted friction, {fitted:.3g}, is {with_it:.3g} with the lag: "
@@ -879,11 +884,13 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
                      "between the monitor and "
                      "the muscle (tubing, a monitor at the regulator), whose loop between the "
                      "branches is not friction: fitting it (linearised) lowers chi2 by "
-                     f"{lowered:.3g} (chi2/nu {with_lag / fitness.nu:.3g}){friction}; "
+                     f"{lowered:.3g} (chi2/nu {with_lag / fitness.nu:.3g}){friction}; the "
+                     f"intervals hold the muscle fitted with it (the model-form term lag); "
                      f"{advice}"),
             "verdict": (f"the force trails the pressure by about {tau_s:.2g} s, a lag between "
                         f"the monitor and the muscle, not friction (the note above): {advice}"),
-            "ready_if": "for the braid angle and rubber (not the friction)"}
+            "ready_if": "for the braid angle and rubber (not the friction)",
+            "shift": {n: float(v) for n, v in zip(best.names, step, strict=True)}}
 
 
 def _rms(r) -> float:

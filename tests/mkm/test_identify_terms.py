@@ -552,7 +552,8 @@ def test_a_lag_between_the_monitor_and_the_muscle_on_ramps_is_named_not_taken_fo
     friction (0.0136 for the truth's 0.00287), and the verdict said calibration.json was ready.
     Fitting the lag finds it within 15 % (0.92 s) and the friction without its loop (0.0043):
     the verdict names the lag first, with what to do (the ramp, judged along its branches by
-    the cell's 4.9 N and 0.01 bar, is a misfit: chi2/nu 6.95)."""
+    the cell's 4.9 N and 0.01 bar, is a misfit: chi2/nu 6.95). The lag is a model-form term of
+    the intervals: the friction's, 0.0106-0.0174 without it, holds the truth with it."""
     from mkm.identify import identify
 
     runs = draw_20261601(tmp_path, {"line_tau_s": 1.0}, ramp_to_top_s=160.0)
@@ -569,9 +570,15 @@ def test_a_lag_between_the_monitor_and_the_muscle_on_ramps_is_named_not_taken_fo
         f"({lag['trail_bar']:.2g} bar on the fastest ramp, 0.05 bar/s): a lag between the "
         "monitor and the muscle (tubing, a monitor at the regulator), whose loop between the "
         "branches is not friction: fitting it (linearised) lowers chi2 by ")
-    assert lag["said"].endswith("the rest of its loop is the lag's, not the braid's; ramp "
-                                "slower, read the pressure at the muscle, or hold the steps, "
-                                "and identify again")
+    assert lag["said"].endswith("the rest of its loop is the lag's, not the braid's; the "
+                                "intervals hold the muscle fitted with it (the model-form term "
+                                "lag); ramp slower, read the pressure at the muscle, or hold "
+                                "the steps, and identify again")
+    # the friction's interval holds the truth through the lag's term, and missed it without
+    low, high = result.bootstrap["interval"]["hysteresis_fraction"]
+    assert low <= 0.00287 <= high
+    assert result.bootstrap["before_model_form"]["hysteresis_fraction"][0] > 0.00287
+    assert "lag" in result.model_form
     assert (f"; first, the force trails the pressure by about {lag['tau_s']:.2g} s, a lag "
             "between the monitor and the muscle, not friction (the note above): ramp slower, "
             "read the pressure at the muscle, or hold the steps, and identify again; "
