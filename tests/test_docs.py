@@ -2615,6 +2615,11 @@ def test_the_guides_examples_of_where_the_range_errors_are_hold_their_files():
     true, above, predicted, error = (float(g) for g in said.groups())
     assert true + above == 8.0 and error == float(f"{worst:.1f}")
     assert abs(100 * (predicted - true) / above - error) <= 100 * 0.01 / above  # their digits
+    # its std says so: the bound auto states over its sweep, as the file records it
+    (muscle,) = [m for m in fresh["practical_range"]["worst_muscles"] if m["err_pct"] == worst]
+    assert (f"its std says so (`auto`'s bound for a call of its sweep is "
+            f"{muscle['auto_bound_pct']:.0f} %, `worst_muscles` in "
+            "`surrogate_range_gp_fresh.json`)") in text
     form = measured("surrogate_limits_range.json")["form"]["worst_pct"]
     (bound,) = re.findall(r"the threshold-linear form itself is within ([\d.]+) % of every FE "
                           r"sweep", text)

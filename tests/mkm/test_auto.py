@@ -230,8 +230,8 @@ def test_a_mesh_answering_where_the_range_surrogate_is_unsure_says_its_bound_and
 
 def test_a_bound_from_a_surrogates_std_says_it_bounds_most_calls_not_every_one(table_path):
     # The range's surrogate answered a fresh call of the practical range (bench_auto.py --range
-    # practical --seed 2026120602) 0.42 % off the fine mesh under a stated bound of 0.33 %
-    # (7.59 of its std): asked for 0.4 %, auto answered beyond it. A bound from a surrogate's
+    # practical --seed 2026120602) 0.42 % off the fine mesh under a stated bound of 0.35 %
+    # (7.17 of its std): asked for 0.4 %, auto answered beyond it. A bound from a surrogate's
     # std says what it is; a mesh's, from its measured error, does not.
     thick = _bound_pct("thickwall").max()
     pred = auto(table_path, tolerance=1.01 * thick / 100).predict(P, 35.0, 2.5, 0.05)
