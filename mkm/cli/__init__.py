@@ -8,6 +8,7 @@ Bad input (a ``ValueError`` from the library or a malformed argument) prints one
 from __future__ import annotations
 
 import argparse
+import difflib
 import errno
 import io
 import os
@@ -57,7 +58,8 @@ class _Parser(argparse.ArgumentParser):
         return namespace, rest
 
     def error(self, message):  # one line, no usage dump
-        self.exit(2, error_line(self.prog, message + self._commands_expected(message)) + "\n")
+        self.exit(2, error_line(self.prog, message + self._commands_expected(message)
+                                + _did_you_mean(message)) + "\n")
 
     def _commands_expected(self, message: str) -> str:
         """For a group typed without its command (``mkm data``): the commands it takes, from
@@ -68,6 +70,18 @@ class _Parser(argparse.ArgumentParser):
                 return (f": expected one of {', '.join(action.choices)} (`{self.prog} --help` "
                         "says what each does)")
         return ""
+
+
+def _did_you_mean(message: str) -> str:
+    """For a value not among an argument's choices (``mkm idenitfy``): the closest choice, if
+    one is close (:func:`difflib.get_close_matches`' default cutoff), read from argparse's
+    message (its choices quoted or not, as Python versions write them)."""
+    said = re.search(r"invalid choice: '([^']*)' \(choose from (.*)\)$", message)
+    if not said:
+        return ""
+    choices = [c.strip().strip("'") for c in said[2].split(",")]
+    close = difflib.get_close_matches(said[1], choices, n=1)
+    return f": did you mean '{close[0]}'?" if close else ""
 
 
 def _notes(args):

@@ -1404,6 +1404,18 @@ def test_a_group_typed_without_its_command_names_its_commands(group, expected, m
     assert err == f"mkm {group}: error: the following arguments are required: {expected}\n"
 
 
+@pytest.mark.parametrize("argv, suggested", [
+    (["idenitfy"], "identify"), (["fem", "solv"], "solve"), (["reprot"], "report"),
+    (["zzz"], None),
+])
+def test_a_mistyped_command_is_told_the_closest_one(argv, suggested, mkm_run):
+    # `mkm idenitfy` listed all 18 commands and left the newcomer to spot the typo
+    code, out, err = mkm_run(argv)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert f"invalid choice: '{argv[-1]}'" in err
+    assert err.endswith(f": did you mean '{suggested}'?\n" if suggested else ")\n"), err
+
+
 @pytest.mark.parametrize("argv, said", [
     (["design", "--require", "300N@2.5bar,eps=0.1", "--top", "x"], "--top 'x'"),
     (["study", "--mesh-muscles", "1e3"], "--mesh-muscles '1e3'"),
