@@ -30,7 +30,7 @@ goes, :class:`StopSignals` handles:
 
 A fault in a driver or an extension (``SIGSEGV``, ``SIGBUS``, ``SIGFPE``, ``SIGILL``) ends the
 process whatever a handler does; while a run goes, :func:`fatal_trace` has :mod:`faulthandler`
-write every thread's trace into the run folder as it ends, and the next command on the bench,
+write the faulting thread's trace into the run folder as it ends, and the next command on the bench,
 which vents first, names the error and the file (:func:`fatal_error`).
 
 Only the signals this platform has are touched (``hasattr(signal, name)``), and the console
@@ -293,8 +293,10 @@ def _keep_python_handlers() -> None:
 @contextmanager
 def fatal_trace(folder: Path) -> Iterator[None]:
     """While the block runs, a fatal error (SIGSEGV, SIGBUS, SIGFPE, SIGILL, which a fault in a
-    driver or an extension raises and no handler survives) writes the Python trace of every
-    thread into ``folder``/:data:`FATAL_TRACE_FILE` (:mod:`faulthandler`) as the process ends;
+    driver or an extension raises and no handler survives) writes the Python trace of the
+    thread that faulted into ``folder``/:data:`FATAL_TRACE_FILE` (:mod:`faulthandler`) as the
+    process ends (not every thread's: walking the other threads' frames while they run
+    faulted again on half the test's runs, the process then dying of SIGSEGV);
     the next command on the bench vents and names it (:func:`fatal_error`). The file is
     removed after a block that ended without one; faulthandler is given back as it was (to
     stderr where it was on). Main thread only; a folder that refuses the file is run without."""
@@ -308,7 +310,7 @@ def fatal_trace(folder: Path) -> Iterator[None]:
         yield
         return
     enabled = faulthandler.is_enabled()
-    faulthandler.enable(file, all_threads=True)
+    faulthandler.enable(file, all_threads=False)
     _keep_python_handlers()
     try:
         yield

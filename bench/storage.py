@@ -1164,7 +1164,8 @@ def load_run(path: str | Path) -> Run:
         status = RunStatus.INCOMPLETE
         fatal = fatal_error(path)  # the trace faulthandler wrote as the process died
         problems.append(f"the run's process died of a fatal error ({fatal}) without closing its "
-                        f"record: the trace of its threads is in {path / FATAL_TRACE_FILE}"
+                        "record: the trace of the thread that faulted is in "
+                        f"{path / FATAL_TRACE_FILE}"
                         if fatal else
                         "the run stopped without closing its record (killed or crashed)")
         # run.json's counter is from its last rewrite; the rows on disk are the truth

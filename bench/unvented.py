@@ -414,8 +414,8 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
             .isoformat(timespec="seconds") if csv.is_file() else marker.last_command_utc)
     outcome, whole = marker.outcome, False
     fatal = fatal_error(path)  # the trace faulthandler wrote as the process died
-    trace = (f"; its process died of a fatal error ({fatal}): the trace of its threads is in "
-             f"{path / FATAL_TRACE_FILE}") if fatal else ""
+    trace = (f"; its process died of a fatal error ({fatal}): the trace of the thread that "
+             f"faulted is in {path / FATAL_TRACE_FILE}") if fatal else ""
     if outcome:
         try:
             meta, whole = outcome_written(meta, outcome, "the run's record its bench marker kept")
@@ -436,7 +436,7 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
                        f"{died or 'an unknown time'}; its last commanded pressure was "
                        f"{marker.last_command_bar:g} bar; vented by the next command at "
                        f"{provenance()['date_utc']}"
-                       + (f"; the trace of its threads is in {path / FATAL_TRACE_FILE}"
+                       + (f"; the trace of the thread that faulted is in {path / FATAL_TRACE_FILE}"
                           if fatal else ""))
     release_reserve(path)  # the room it kept for its final record: this one
     try:

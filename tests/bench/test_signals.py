@@ -684,22 +684,23 @@ def test_a_fatal_signal_leaves_its_trace_in_the_run_folder_and_the_next_command_
     (folder,) = (tmp_path / "runs").iterdir()
     trace = (folder / "fatal-error.txt").read_text()
     assert trace.startswith(f"Fatal Python error: {words}\n"), trace
-    assert "in read_then_fault" in trace  # the Python stack where it failed, every thread's
+    assert "in read_then_fault" in trace  # the Python stack where it failed
     assert load_run(folder).problems[0] == (
         f"the run's process died of a fatal error ({words}, {name}) without closing its record: "
-        f"the trace of its threads is in {folder / 'fatal-error.txt'}")  # mkm report says so
+        f"the trace of the thread that faulted is in {folder / 'fatal-error.txt'}")  # the report
     assert main(["vent", "--config", str(config)]) == 0
     err = capsys.readouterr().err
     assert "ended without venting; its last commanded pressure was 0.5 bar" in err
-    said = (f"its process died of a fatal error ({words}, {name}): the trace of its threads "
-            f"is in {folder / 'fatal-error.txt'}")
+    said = (f"its process died of a fatal error ({words}, {name}): the trace of the thread "
+            f"that faulted is in {folder / 'fatal-error.txt'}")
     assert said in err, err
     run = load_run(folder)
     assert run.status == "killed", run.reason
     pid = run.meta.process.pid
     assert run.reason.startswith(f"its process (pid {pid}) died of a fatal error "
                                  f"({words}, {name}), at about "), run.reason
-    assert run.reason.endswith(f"; the trace of its threads is in {folder / 'fatal-error.txt'}")
+    assert run.reason.endswith(
+        f"; the trace of the thread that faulted is in {folder / 'fatal-error.txt'}")
 
 
 def test_a_run_that_ends_leaves_no_fatal_trace_and_gives_faulthandler_back(config, tmp_path):
