@@ -63,7 +63,6 @@ class RunData:
     sha256: dict
     tare_se_N: float = 0.0
     timed: bool = True  # the holds have their real durations (creep can be fitted)
-    binned: bool = False  # an imported ramp: its steps are bins of a continuous sweep
     #: an imported run whose lab declared its accuracy (``mkm import --accuracy``): its steps'
     #: budgets stand for the noise a table's single values cannot show
     declared: bool = False
@@ -151,6 +150,11 @@ class RunData:
         rising = (self.steps["direction"] == "up").to_numpy()
         sign = np.where(rising, 1.0, -1.0)[np.maximum(self.hold, 0)]
         return np.where(self.hold >= 0, sign, 0.0)
+
+    @property
+    def binned(self) -> bool:
+        """An imported ramp: its steps are bins of a continuous sweep."""
+        return self.ramp_rate_bar_per_s is not None
 
     def ramp_rate_at_samples(self) -> np.ndarray | float:
         """Per sample: its ramp bin's pressure rate [bar/s] (0 outside the bins), or 0 for a
@@ -307,7 +311,7 @@ def load_run_data(path) -> RunData:
     return RunData(path=path, muscle=muscle, time_s=time_s, pressure_bar=pressure,
                    force_N=samples["force_N"].to_numpy(dtype=float), hold=hold,
                    steps=_columns(settled, "pressure_se_bar"), sha256=sha, tare_se_N=tare_se,
-                   timed=not is_ramp, binned=is_ramp,
+                   timed=not is_ramp,
                    ramp_rate_bar_per_s=rate if is_ramp else None,
                    vented_bar=_vented(run), note=note, **_instrument(run))
 
