@@ -66,7 +66,7 @@ from mkm.bench.bounded import call_within
 from mkm.bench.config import MONITOR_FAULT, BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
-from mkm.bench.preflight import ForceCeiling, braid_lock, warnings
+from mkm.bench.preflight import ForceCeiling, braid_lock, ceiling_lines, warnings
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals, fatal_trace
@@ -1254,13 +1254,24 @@ def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtu
     a muscle outside the practical range, is said (:func:`mkm.bench.preflight.warnings`).
     ``notify`` receives the operator's lines (default: stderr, ``mkm <command>: ...``, with
     ``command`` the command the user ran). ``ceiling``: the most the muscle ``mkm identify``
-    identified pulls (:func:`mkm.identify.band.force_ceiling`), which arms the over-force
-    interlock (:meth:`mkm.bench.worker.Acquisition.overforce`).
+    identified pulls (:func:`mkm.identify.band.config_ceiling`), which arms the over-force
+    interlock (:meth:`mkm.bench.worker.Acquisition.overforce`); required where
+    ``safety.calibration`` names one (the bench cannot read an identification itself), and a
+    plan whose top step the identified muscle must pull past the force interlock at is
+    refused (:func:`mkm.bench.preflight.ceiling_lines`); both ``ValueError``, nothing
+    pressurised.
     """
     config = with_backend(config, backend)
     lock = braid_lock(config)
     if lock and not allow_past_lock:
         raise ValueError(f"{lock}: pass --allow-past-lock to record it anyway")
+    if ceiling is None and config.safety.calibration is not None:
+        raise ValueError(f"config {config.source}: safety.calibration="
+                         f"{config.safety.calibration!r} arms the over-force interlock: pass "
+                         "its ceiling (ceiling=mkm.identify.band.config_ceiling(config)), as "
+                         "`mkm acquire` does")
+    if ceiling is not None and (refusal := ceiling_lines(config, ceiling)[1]):
+        raise ValueError(f"{refusal}; nothing was pressurised")
     for warning in warnings(config):
         (notify or StderrNotice(command))(f"warning: {warning}")
     check_out_root(out_root)  # before the device is opened

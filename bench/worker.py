@@ -60,6 +60,7 @@ from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.preflight import (
     CREEP_FRACTION,
     FRICTION_FRACTION,
+    OVERFORCE_FROM_FRACTION,
     ForceCeiling,
     adc_step_N,
     bound_assumes,
@@ -81,12 +82,6 @@ OVERPRESSURE_HARD_FRACTION = 0.10
 #: The bench marker takes milliseconds on a local disk; a state folder slower than this [s] hangs
 #: (a network share), and the loop goes on without it rather than leave the interlocks unwatched.
 MARKER_WAIT_S = 0.5
-#: the over-force interlock judges readings from this fraction of ``max_pressure_bar`` up: a
-#: monitor reading low hides over-pressure only near the limit (one reading 0.8 of the pressure
-#: hides it from 0.8 of the limit), and one that reads less than half the pressure its
-#: regulator holds (frozen near 0 bar) is the follow and stuck-monitor interlocks'; below it a
-#: load cell's zero drifting beyond its data sheet is no over-pressure
-OVERFORCE_FROM_FRACTION = 0.5
 #: a load cell whose input holds one ADC code this long [s] of sample time, where its tare
 #: strayed more than a step, is stuck or disconnected: no live cell's noise stays on one code
 #: (twenty readings at 10 Hz; one step of noise keeps two readings on one code at most a third
@@ -732,13 +727,14 @@ class Acquisition:
         the reading taken its accuracy high, plus the identified friction (which a falling
         pressure leaves in the force), but no more than the ceiling at the highest reading
         since the muscle was last vented, also taken its accuracy high (the braid holds a force
-        at most at what that peak pulled up; creep and a yielding frame only take force off).
+        at most at what that peak pulled up; creep and a yielding frame only take force off),
+        times ``1 + safety.overforce_margin_fraction`` (:meth:`ForceCeiling.most_N`).
         Only with an electronic regulator, after the tare (forces before it are from the
         configured zero), under a pressure commanded, at a reading from
-        :data:`OVERFORCE_FROM_FRACTION` of ``max_pressure_bar`` up, and not within
-        ``safety.pressure_follow_s`` of a command that fell: a muscle exhausts through its tube
-        behind the regulator's sensor, and holds more than the reading meanwhile (on a rise it
-        lags below it, which only lowers the force)."""
+        :data:`~mkm.bench.preflight.OVERFORCE_FROM_FRACTION` of ``max_pressure_bar`` up, and
+        not within ``safety.pressure_follow_s`` of a command that fell: a muscle exhausts
+        through its tube behind the regulator's sensor, and holds more than the reading
+        meanwhile (on a rise it lags below it, which only lowers the force)."""
         ceiling = self.ceiling
         if ceiling is None or not self.electronic:
             return None
@@ -759,20 +755,7 @@ class Acquisition:
         measured = reading + self.monitor_low_bar
         if measured < OVERFORCE_FROM_FRACTION * self.config.regulator.max_pressure_bar:
             return None
-        offset_bar, gain = self.config.regulator.reading_bounds()
-        high_bar = measured + offset_bar + gain * measured
-        friction = ceiling.friction_fraction
-        most = (1.0 + friction) * float(np.interp(high_bar, ceiling.pressure_bar,
-                                                  ceiling.force_N))
-        where = (f"at {high_bar:.3f} bar, the reading at its accuracy, with its 95 % band and "
-                 f"{100 * friction:.3g} % for the braid's friction")
-        peak = self._peak_bar + self.monitor_low_bar
-        peak_bar = peak + offset_bar + gain * peak
-        rise = float(np.interp(peak_bar, ceiling.pressure_bar, ceiling.force_N))
-        if rise < most:
-            most, where = rise, (f"at {peak_bar:.3f} bar, the highest reading since the vent "
-                                 "at its accuracy, with its 95 % band: the braid holds no more "
-                                 "than that pressure pulled")
+        most, where = ceiling.most_N(self.config, measured, self._peak_bar + self.monitor_low_bar)
         cell = self.cell
         accuracy_N = (ZERO_NOISE_SIGMAS * self.tare_std_V * cell.sensitivity_N_per_V
                       + 2 * self.step_N
