@@ -37,8 +37,10 @@ disk, :mod:`mkm.bench.recorder` writes behind it):
   held, or trailing by more than that much sample time for as long (they are written when it
   returns); the run is ``failed``.
 
-- reading: a read that times out while a pressure is commanded (at 0 bar, ``daq.read_retries``
-  timeouts in a row are retried); the run is ``failed``.
+- reading: a read that times out while the muscle may hold pressure
+  (:meth:`Acquisition.pressurised`: a pressure commanded, or a reading above
+  ``safety.vent_below_bar``; vented, ``daq.read_retries`` timeouts in a row are retried); the
+  run is ``failed``.
 
 If the interlock's own vent write fails, the reason says so and asks for a vent by hand.
 """
@@ -287,7 +289,7 @@ class Acquisition:
             except ReadTimeout as exc:
                 timeouts += 1
                 self.recorder.meta.counters["read_timeouts"] += 1
-                if self.electronic and self.command_bar > 0:
+                if self.electronic and self.pressurised():
                     # pressurised and blind: no interlock can act until a reading comes; a
                     # signal during its vent is held until the vent is out, and added to it
                     try:
@@ -295,7 +297,7 @@ class Acquisition:
                             tripped = self._vent_for(
                                 self.hung_said() or
                                 f"read interlock: no reading within {daq.read_timeout_s:g} s "
-                                f"with {self.command_bar:g} bar commanded at "
+                                f"with {self.held_said()} at "
                                 f"{self.next_index / self.rate_hz:g} s ({exc})",
                                 RunStatus.FAILED)
                     except StopSignal as sig:
@@ -829,6 +831,24 @@ class Acquisition:
         self.tare_offset_V, self.tare_std_V = offset_V, std_V
         self._tared = True
         self._bounds()  # built before any pressure, not in the rise they judge
+
+    def pressurised(self) -> bool:
+        """Whether the muscle may hold pressure: a pressure commanded, or, whatever the
+        command, the last plausible reading above ``safety.vent_below_bar`` (a vent the
+        regulator has not exhausted yet, or does not follow). The read interlock and the
+        run's watchdog watch a blind run by it: what is measured, not only what is
+        commanded."""
+        return self.command_bar > 0 or self.measured_bar > self.config.safety.vent_below_bar
+
+    def held_said(self) -> str:
+        """The pressure :meth:`pressurised` found, in words: the command, and the last reading
+        where it is above the vent threshold and the command by more than
+        ``safety.pressure_tolerance_bar`` (one at its command says nothing more)."""
+        safety = self.config.safety
+        read = (f" and {self.measured_bar:.3f} bar last read"
+                if self.measured_bar > max(safety.vent_below_bar, self.command_bar
+                                           + safety.pressure_tolerance_bar) else "")
+        return f"{self.command_bar:g} bar commanded{read}"
 
     def hung_said(self) -> str:
         """Why the read hung and what the watchdog's vent did, or ""."""
