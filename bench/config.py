@@ -427,10 +427,9 @@ class Safety:
     The over-force interlock is armed by ``calibration``, the ``calibration.json`` of ``mkm
     identify`` for the muscle held (a path relative to the configuration's folder; ``mkm
     acquire --calibration`` names one instead): the load cell may read no more than the
-    identified muscle pulls at the measured pressure (its 95 % band and friction), times
-    ``1 + overforce_margin_fraction``
-    (:meth:`mkm.bench.preflight.ForceCeiling.most_N`). The margin is bounded by
-    :data:`MAX_OVERFORCE_MARGIN_FRACTION`.
+    identified muscle pulls at the measured pressure (with its prediction band and friction),
+    times ``1 + overforce_margin_fraction`` (:meth:`mkm.bench.preflight.ForceCeiling.most_N`).
+    The margin is bounded by :data:`MAX_OVERFORCE_MARGIN_FRACTION`.
 
     Every limit is bounded by what it guards (checked with the other sections by
     :meth:`BenchConfig.check`): the tolerance by a tenth of the regulator's full scale, the
