@@ -24,6 +24,7 @@ import pytest
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
+from mkm.bench.sim_settings import sim_of
 from mkm.bench.storage import load_run
 from mkm.fem.calibration import Calibration
 from mkm.fem.materials import SILASTIC_S
@@ -61,13 +62,7 @@ CALIBRATION = {"thickwall": {
 def sim_config(eps: float, seed: int = 0, **truth):
     """The packaged bench holding the thick-wall muscle ``TRUTH`` at ``eps`` (its instruments
     other than declared by ``truth``: ``[sim.truth]``)."""
-    scale = TRUTH["rubber_scale"]
-    return load_config(eps=eps).replace(sim={
-        "model": "thickwall", "seed": seed,
-        "hysteresis_fraction": TRUTH["hysteresis_fraction"],
-        "creep_fraction": TRUTH["creep_fraction"],
-        "truth": {"theta0_deg": TRUTH["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
-                  "C01_MPa": scale * SILASTIC_S.C01_MPa, **truth}})
+    return load_config(eps=eps).replace(sim=sim_of(TRUTH, seed, **truth))
 
 
 @pytest.fixture
@@ -216,7 +211,7 @@ def config_file(tmp_path, calibration: Path, margin: float = 0.0, monitor_gain: 
     path = tmp_path / "lab" / "bench.toml"
     (path.parent / "identified").mkdir(parents=True)
     (path.parent / "identified" / calibration.name).write_bytes(calibration.read_bytes())
-    path.write_text(text)
+    path.write_text(text, encoding="utf-8")
     return path
 
 
