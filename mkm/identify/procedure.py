@@ -541,9 +541,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         notes.append(f"{', '.join(boot['stretched'])}: the bootstrap's 95 % range left the "
                      "estimate out (its replicates step as if a parameter resting on a bound "
                      "were free): the interval is stretched to hold it; read it as approximate")
-    if best.at_edge:
-        notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
-                     "is cut there")
+    notes += [edge_note(name, best, source) for name in best.at_edge]
     notes += terms_at_bounds(runs, best)
     cautions += [lag] if lag else []
     notes += [c["said"] for c in cautions]
@@ -895,6 +893,50 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
 
 def _rms(r) -> float:
     return float(np.sqrt(np.mean(np.square(r))))
+
+
+#: a rubber at an edge of its search, per edge: how it is said, the practical range's end, and
+#: what makes a muscle pull so: its wall, its pressures and its load cell read one way
+RUBBER_EDGE = {
+    "low": ("softer", "softest", "a wall thinner than declared pulls as a softer rubber",
+            "read low, as in MPa taken for bar, or a monitor off its zero: the muscle pulls at "
+            "each as at a higher one", "a cell reading high"),
+    "high": ("stiffer", "stiffest", "a wall thicker than declared pulls as a stiffer rubber",
+             "read high, as in kPa or psi taken for bar, or a monitor off its zero: the muscle "
+             "pulls at each as at a lower one", "a cell reading low")}
+
+
+def edge_note(name: str, best, source) -> str:
+    """The note on ``name`` fitted at an edge of its search box (``best.bounds``): which edge,
+    what the runs then say and what to check; for a box other than the FE model's (the
+    surrogate's, on which a corrected fit ended), that ``--search model`` searches beyond
+    it."""
+    value = best.values[name]
+    low, high = best.bounds[name]
+    edge = "low" if value - low <= high - value else "high"
+    said = (f"{name} {value:.4g} is at the {edge} edge of its search box ({low:.4g} to "
+            f"{high:.4g}): the interval is cut there")
+    surrogate = source.box is not fitting.FE_BOX
+    if name == "rubber_scale":
+        rubber, end, wall, pressures, cell = RUBBER_EDGE[edge]
+        said += (f"; these runs pull as a rubber {rubber} than any searched (C10 "
+                 f"{fitting.rubber(best.values)[0]:.3g} MPa at "
+                 f"{fitting.assumed_ratio(best.values)[1]} ratio; the practical range's "
+                 f"{end} C10 is {PRACTICAL_RANGE.C10_MPa[0 if edge == 'low' else 1]:g} MPa): "
+                 f"check the wall's declared thickness ({wall}), the pressures ({pressures}) "
+                 f"and the load cell's gain ({cell})")
+    elif name == "theta0_deg" and not surrogate:
+        said += (f"; a braid angle of {value:.3g} deg is not a muscle of this family: check "
+                 "the declared diameter and wall and the units of force and pressure")
+    elif name in fitting.GEOMETRY_FACTORS and not surrogate:
+        factor = fitting.GEOMETRY_FACTORS[name][0 if edge == "low" else 1]
+        said += f"; {factor:g} times the declared value: the declaration is far off, measure it"
+    else:
+        said += "; check the declared geometry and the units of force and pressure"
+    if surrogate:
+        said += (f"; the box is the surrogate's ({source.name}): --search model searches with "
+                 "the FE model beyond it")
+    return said
 
 
 def ratio_edge_note(ratio: float, share: float, bounds: tuple[float, float],

@@ -1138,3 +1138,66 @@ def test_a_sliding_sleeve_taken_for_a_creep_is_said_to_be_the_braid_first(tmp_pa
         "calibrate-loadcell) and identify again; if it is bonded and does creep so, "
         "calibration.json is ready for --calibration (mkm report, design, fem solve)")
     assert warning["said"] in result.notes
+
+
+def test_a_rubber_softer_than_the_search_is_said_with_what_to_check(tmp_path):
+    """A 60 mm tube of a soft silicone (C10 0.01 MPa at Silastic S's ratio, below the practical
+    range's 0.03) to 1.5 bar on the thick-wall bench: the fit stops at the softest rubber
+    searched (C10 0.0139 MPa), and the note said only that the interval is cut there, its
+    guide row's advice an angle's or a wall's. It says which edge, that the runs pull as a
+    rubber softer than any searched, and what makes a muscle pull so: a wall thinner than
+    declared, pressures read low, a load cell reading high."""
+    from mkm.identify import identify
+
+    paths = bench_runs(tmp_path, {"theta0_deg": 20.0, "C10_MPa": 0.01, "C01_MPa": 0.00905},
+                       (0.0, 0.135), steps_to(1.5), (7, 1007), hysteresis_fraction=0.03,
+                       model="thickwall",
+                       muscle={"id": "soft", "D0_mm": 60.0, "t0_mm": 1.0, "L0_mm": 300.0},
+                       loadcell={"capacity_N": 9806.65, "sensitivity_N_per_V": 980.665},
+                       regulator={"max_pressure_bar": 1.5, "full_scale_bar": 4.0,
+                                  "monitor_accuracy_bar": 0.04},
+                       safety={"tare_max_shift_N": 100.0, "tare_max_std_N": 5.0,
+                               "vent_below_bar": 0.08})
+    result = identify(paths, model="thickwall", search="model")
+    assert result.fit.at_edge == ["rubber_scale"]
+    assert (
+        "rubber_scale 0.2 is at the low edge of its search box (0.2 to 8.646): the interval is "
+        "cut there; these runs pull as a rubber softer than any searched (C10 0.0139 MPa at "
+        "Silastic S's ratio; the practical range's softest C10 is 0.03 MPa): check the wall's "
+        "declared thickness (a wall thinner than declared pulls as a softer rubber), the "
+        "pressures (read low, as in MPa taken for bar, or a monitor off its zero: the muscle "
+        "pulls at each as at a higher one) and the load cell's gain (a cell reading high)"
+    ) in result.notes
+
+
+def test_a_rubber_at_the_top_of_the_search_or_of_the_surrogates_box_is_said_so():
+    """The stiff edge says the opposite checks; an edge of the surrogate's box (a corrected fit
+    ended there) says that --search model searches beyond it; an angle at the FE search's
+    edge is no muscle of this family."""
+    from types import SimpleNamespace
+
+    from mkm.identify.fitting import FE_BOX, ModelStatic
+    from mkm.identify.procedure import edge_note
+
+    def at(name, value, bounds):
+        return SimpleNamespace(values={"theta0_deg": 30.0, "rubber_scale": 1.0, name: value},
+                               bounds={name: bounds})
+
+    fe = ModelStatic("thickwall", cache_dir=None)
+    top = FE_BOX["rubber_scale"][1]
+    assert edge_note("rubber_scale", at("rubber_scale", top, FE_BOX["rubber_scale"]), fe) == (
+        f"rubber_scale {top:.4g} is at the high edge of its search box (0.2 to {top:.4g}): the "
+        "interval is cut there; these runs pull as a rubber stiffer than any searched (C10 "
+        "0.6 MPa at Silastic S's ratio; the practical range's stiffest C10 is 0.6 MPa): check "
+        "the wall's declared thickness (a wall thicker than declared pulls as a stiffer "
+        "rubber), the pressures (read high, as in kPa or psi taken for bar, or a monitor off "
+        "its zero: the muscle pulls at each as at a lower one) and the load cell's gain (a "
+        "cell reading low)")
+    surrogate = SimpleNamespace(box={"rubber_scale": (0.432, 8.6)}, name="surrogate")
+    assert edge_note("rubber_scale", at("rubber_scale", 0.432, (0.432, 8.6)), surrogate).endswith(
+        "(a cell reading high); the box is the surrogate's (surrogate): --search model "
+        "searches with the FE model beyond it")
+    assert edge_note("theta0_deg", at("theta0_deg", 50.0, (15.0, 50.0)), fe) == (
+        "theta0_deg 50 is at the high edge of its search box (15 to 50): the interval is cut "
+        "there; a braid angle of 50 deg is not a muscle of this family: check the declared "
+        "diameter and wall and the units of force and pressure")
