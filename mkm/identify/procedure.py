@@ -645,11 +645,16 @@ def creep_at_floor(runs, best, boot) -> bool:
 
 def _without_creep(source, fe: ModelStatic, runs, best) -> dict:
     """The creep dropped with the braid fitted and with the other one
-    (:func:`without_creep`): the braids' names and the rise of chi2 with each."""
+    (:func:`without_creep`): the braids' names and the rise of chi2 with each, and what the
+    refits cost: the model sweeps they made (one per run and evaluation; the fitted braid's
+    are the search's source's, none where that is a surrogate) and their seconds."""
     other = _other_braid(fe)
-    return {"braid": _braid_of(other), "fitted_braid": _braid_of(fe),
-            "chi2_rise": without_creep(source, fe, runs, best, other),
-            "fitted_braid_chi2_rise": without_creep(source, fe, runs, best, fe)}
+    started, fe_calls = time.perf_counter(), fe.calls
+    rises = {"braid": _braid_of(other), "fitted_braid": _braid_of(fe),
+             "chi2_rise": without_creep(source, fe, runs, best, other),
+             "fitted_braid_chi2_rise": without_creep(source, fe, runs, best, fe)}
+    return {**rises, "sweeps": other.calls + fe.calls - fe_calls,
+            "seconds": round(time.perf_counter() - started, 3)}
 
 
 def creep_or_gain(runs, best, boot, other_braid: dict | None = None) -> dict:

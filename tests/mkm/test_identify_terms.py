@@ -1061,7 +1061,7 @@ def test_seed_20261612s_sliding_sleeve_is_the_braid_once_its_refit_is_evaluated(
     above it, 52 % of the bonded braid's rise (4.37e3), and the load cell was named first (the
     recorded draw, four runs searched with the range surrogate: 873 above, 72 %)."""
     from mkm.identify.fitting import Corrected, ModelStatic, fe_correction, fit, internal_rubber
-    from mkm.identify.procedure import BRAID_TAKES_CREEP, _without_creep
+    from mkm.identify.procedure import BRAID_REFIT_STEPS, BRAID_TAKES_CREEP, _without_creep
     from mkm.identify.runs import load_runs
 
     truth = {"theta0_deg": 34.3895, "C10_MPa": 0.22649, "C01_MPa": 0.015836}
@@ -1093,6 +1093,12 @@ def test_seed_20261612s_sliding_sleeve_is_the_braid_once_its_refit_is_evaluated(
     # the runs better than the bonded fit with the creep (one linearised step: 52 % of the rise)
     assert rises["chi2_rise"] <= (1 - BRAID_TAKES_CREEP) * rises["fitted_braid_chi2_rise"]
     assert rises["chi2_rise"] < 0.0
+    # what the refits cost: the sliding braid's FE sweeps, one per run and evaluation (the
+    # first and up to BRAID_REFIT_STEPS more), the bonded braid's on the corrected thick-wall
+    # form, no sweep
+    assert rises["sweeps"] % len(runs) == 0
+    assert 2 * len(runs) <= rises["sweeps"] <= (1 + BRAID_REFIT_STEPS) * len(runs)
+    assert rises["seconds"] > 0.0
 
 
 @pytest.mark.slow
