@@ -32,6 +32,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
+import shlex
 import time
 import warnings
 
@@ -70,6 +71,8 @@ RATIO_WIDTH = 0.25
 RATIO_CONDITION = 1e8
 #: a rejected ratio also lowers chi2 by this much when freed (95 % of chi2 with one degree)
 RATIO_LIKELIHOOD = float(chi2.ppf(0.95, 1))
+#: the step of C01's share the FE model's column for it is differenced over (:func:`fe_ratio_test`)
+RATIO_STEP = 0.05
 #: the 95 % half-width above which an interval is wide (the issue's targets: theta0 within
 #: 0.3 deg, the rubber within 10 %, friction within one point, the wall within 0.1 mm; the
 #: rest length within 1 mm, a shortening of 0.4 % of a 250 mm muscle)
@@ -484,6 +487,13 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                          f"{said} ratio {assumed:.3g} assumed; the C10 and "
                          "C01 written are that assumption's (the stiffness the runs fix, "
                          f"not two measured constants){_declared_holds_ratio(rubber)}")
+    if "rubber_scale" in best.names and _box_cut_the_ratio(rubber):
+        notify(f"the surrogate's box cut the test of C10 and C01: would {fe.name} separate them? "
+               "(two sweeps per run)")
+        rubber["fe_ratio_test"] = fe_ratio_test(source, fe, runs, best)
+        if rubber["fe_ratio_test"]["separates"]:
+            notes.append(search_model_note(rubber["fe_ratio_test"], runs, command_options(
+                groups, fe.name, "model", None)))
     if "rubber_scale" in best.names and not rubber["separated"]:
         notify("the assumed rubber ratio: refits at the ends of what the runs allow")
         with warnings.catch_warnings(record=True) as caught:
@@ -1404,6 +1414,59 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                                 f"its own); excluding it is not enough while the braid "
                                 f"is in doubt and the other braid at it lowers chi2 as "
                                 f"far, within {RATIO_LIKELIHOOD:.2f}"}, terms, source
+
+
+def _box_cut_the_ratio(rubber: dict) -> bool:
+    """Whether the runs were left not separating C10 and C01 because the surrogate's box cut
+    the test of their ratio (C01's share stopped at it, had no room in it, or its interval was
+    cut there), not by the runs."""
+    return not rubber["separated"] and bool(
+        rubber.get("box_stopped") or rubber.get("ratio_box_cut")
+        or rubber.get("why", "").startswith("C01's share has no room in the search box"))
+
+
+def search_model_note(test: dict, runs, options) -> str:
+    """The note where the FE model may separate C10 and C01 that the surrogate's box left
+    together (:func:`fe_ratio_test`), with the command that tests it."""
+    low, high = test["ratio_ci"]
+    paths = " ".join(shlex.quote(str(run.path)) for run in runs)
+    return (f"the surrogate's box cut the test of C10 and C01, and the FE model may separate "
+            f"them: its change with the ratio at this optimum puts C01/C10 at "
+            f"{test['ratio']:.3g} (95 % interval {low:.3g}-{high:.3g}, linearised; "
+            f"{test['assumed_from']} {test['assumed']:.3g}); to test it, identify again with the "
+            f"FE model searching (one sweep per run and evaluation): mkm identify {paths} "
+            f"{' '.join(shlex.quote(o) for o in options)}")
+
+
+def fe_ratio_test(source, fe: ModelStatic, runs, best) -> dict:
+    """What the FE model would make of the rubber's ratio where the search's own test of it was
+    cut by the surrogate: the fit at the assumed ratio (``best``) refitted with C01's share
+    free by one linearised step, the share's column the FE model's (two sweeps per run: at the
+    optimum and at a share :data:`RATIO_STEP` further), its 95 % interval from the Fisher
+    matrix (the residuals' variance their own), as C01/C10; and whether it would separate C10
+    and C01 by the rule's width or by excluding the assumed ratio (``separates``)."""
+    share = fitting.assumed_share(best.values)
+    step = RATIO_STEP if share + RATIO_STEP < 1.0 else -RATIO_STEP
+    differences = _minus(fe.tables(runs, {**best.values, "c01_fraction": share + step}),
+                         fe.tables(runs, best.values))
+    column = best.w * _hold_change(source, runs, best, differences) / step
+    assumed, said = fitting.assumed_ratio(best.values)
+    if not np.any(column):  # the runs do not see the ratio at all
+        top = fitting.TERM_BOUNDS["c01_fraction"][1]
+        return {"ratio": assumed, "ratio_ci": [0.0, top / (1.0 - top)], "assumed": assumed,
+                "assumed_from": said, "sweeps": 2 * len(runs), "separates": False}
+    J = best.weighted_jacobian
+    J = np.column_stack([J[:, np.sqrt(np.sum(J ** 2, axis=0)) > 0], column])
+    change = -np.linalg.lstsq(J, best.weighted_residual, rcond=None)[0][-1]
+    variance = best.rss / max(best.n - J.shape[1], 1)
+    se = math.sqrt(variance * np.linalg.pinv(J.T @ J)[-1, -1])
+    centre = min(max(share + change, 0.0), 0.999)
+    shares = (max(centre - 1.96 * se, 0.0), min(centre + 1.96 * se, 0.999))
+    ratio, (low, high) = centre / (1 - centre), (v / (1 - v) for v in shares)
+    narrow = ratio > 0 and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio
+    return {"ratio": float(ratio), "ratio_ci": [float(low), float(high)], "assumed": assumed,
+            "assumed_from": said, "sweeps": 2 * len(runs),
+            "separates": bool(narrow or not low <= assumed <= high)}
 
 
 def ratio_freed(rubber: dict) -> dict | None:

@@ -710,6 +710,10 @@ def test_a_ratio_stopped_by_the_surrogates_box_is_tested_with_the_fe_model_where
             "(surrogate:kind=muscle-gp-range corrected by the FE model's) before the runs fixed "
             "it: one rubber scale at Silastic S's ratio 0.905 assumed") in result.notes
     assert "--search model" not in result._verdict_line()
+    # the FE model's own linearised test of the ratio (two sweeps per run) does not separate
+    # them either, as --search model did not: no note sends the user to it
+    assert not result.rubber["fe_ratio_test"]["separates"]
+    assert not any("the FE model may separate them" in note for note in result.notes)
 
     paths = bench_runs(tmp_path / "gain", {"loadcell_gain": 1.02}, (0.0, 0.122),
                        (0.5, 1.0, 1.5, 2.0, 2.5), (1, 2), hysteresis_fraction=0.0)
@@ -1207,3 +1211,59 @@ def test_a_rubber_at_the_top_of_the_search_or_of_the_surrogates_box_is_said_so()
         "theta0_deg 50 is at the high edge of its search box (15 to 50): the interval is cut "
         "there; a braid angle of 50 deg is not a muscle of this family: check the declared "
         "diameter and wall and the units of force and pressure")
+
+
+@pytest.mark.parametrize("eps, separates", [((0.0, 0.0948, 0.1895), True),
+                                            ((0.0, 0.0948), False)])
+def test_the_fe_models_own_test_of_the_ratio_the_surrogates_box_cut(tmp_path, eps, separates):
+    """A 5 mm latex muscle (C10 0.4, C01 0.08 MPa: C01/C10 0.2) to 8 bar, imported ramps on the
+    coarse FE bench, fitted at Silastic S's ratio (0.905) on the thick-wall form corrected by
+    the FE model: the FE model's change with the ratio there, one linearised step, puts C01/C10
+    near the truth's and excludes Silastic S's with three eps (the default search separates
+    them too, 0.193); with two (eps 0 and 9.5 %) it leaves Silastic S's inside, as --search
+    model does (0-3.91; the default's note: C01's share reached the surrogate's box)."""
+    from mkm.identify.fitting import Corrected, ModelStatic, fe_correction, fit
+    from mkm.identify.procedure import fe_ratio_test
+    from mkm.identify.runs import load_runs
+
+    runs = load_runs(bench_runs(
+        tmp_path, {"theta0_deg": 25.0, "C10_MPa": 0.4, "C01_MPa": 0.08}, eps, steps_to(8.0),
+        tuple(7 + 1000 * k for k in range(len(eps))), hysteresis_fraction=0.03,
+        ramp_to_top_s=60.0, muscle={"id": "latex5", "D0_mm": 5.0, "t0_mm": 0.8, "L0_mm": 60.0},
+        loadcell={"capacity_N": 490.3325, "sensitivity_N_per_V": 49.03325},
+        regulator={"max_pressure_bar": 8.0, "full_scale_bar": 9.0, "monitor_accuracy_bar": 0.09},
+        safety={"tare_max_shift_N": 49.03, "tare_max_std_N": 4.9, "vent_below_bar": 0.18}))
+    fe, base = ModelStatic("axisym:mesh=coarse", cache_dir=None), ModelStatic("thickwall",
+                                                                               cache_dir=None)
+    names = ("theta0_deg", "rubber_scale", "hysteresis_fraction", "pressure_offset_bar")
+    best = fit(base, runs, names, {"theta0_deg": 25.0, "rubber_scale": 4.0,
+                                   "hysteresis_fraction": 0.02, "creep_fraction": 0.0,
+                                   "log_tau": 0.0, "pressure_offset_bar": 0.0})
+    for _ in range(2):
+        source = Corrected(base, fe_correction(base, fe, runs, best.values))
+        best = fit(source, runs, names, best.values)
+    test = fe_ratio_test(source, fe, runs, best)
+    assert test["assumed"] == pytest.approx(0.905, abs=1e-3) and test["sweeps"] == 2 * len(runs)
+    low, high = test["ratio_ci"]
+    assert test["separates"] is separates
+    assert low <= 0.2 <= high
+    assert (high < 0.905) is separates
+
+
+def test_the_search_model_note_gives_the_command_to_type():
+    """Where the FE model may separate C10 and C01 that the surrogate's box left together, the
+    note gives what it found and the command, its folders quoted for the shell."""
+    from types import SimpleNamespace
+
+    from mkm.identify.procedure import search_model_note
+
+    test = {"ratio": 0.2151, "ratio_ci": [0.1838, 0.2482], "assumed": 0.9049,
+            "assumed_from": "Silastic S's", "sweeps": 6, "separates": True}
+    runs = [SimpleNamespace(path=Path("runs/latex eps0")), SimpleNamespace(path=Path("runs/b"))]
+    assert search_model_note(test, runs, ["--params", "theta0,rubber,friction,creep,offset",
+                                          "--model", "axisym", "--search", "model"]) == (
+        "the surrogate's box cut the test of C10 and C01, and the FE model may separate them: "
+        "its change with the ratio at this optimum puts C01/C10 at 0.215 (95 % interval "
+        "0.184-0.248, linearised; Silastic S's 0.905); to test it, identify again with the FE "
+        "model searching (one sweep per run and evaluation): mkm identify 'runs/latex eps0' "
+        "runs/b --params theta0,rubber,friction,creep,offset --model axisym --search model")
