@@ -3058,6 +3058,93 @@ def test_files_whose_headers_declare_one_state_are_joined(tmp_path, mkm_cli):
     assert len(run.meta.imported_from["files"]) == len(files)
 
 
+
+def _lab_sheet(path: Path, eps: float, *header: str) -> Path:
+    """A lab's step table at ``eps`` (the thick-wall model's forces), semicolon separated with
+    decimal commas, under the comment lines ``header``."""
+    rows = [f"{p:.2f};{f:.2f}".replace(".", ",")
+            for p, f in zip(PRESSURES, thickwall_N(PRESSURES, eps), strict=True)]
+    path.write_text("".join(f"# {line}\n" for line in header)
+                    + "Pressure [bar];Force [N]\n" + "\n".join(rows) + "\n")
+    return path
+
+
+LAB_HEADER = ("Muscle test LM-30, operator: KB", "Contraction: 5 %", "L0 = 282 mm",
+              "Inner diameter: 30 mm")
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--D0", "30", "--L0", "282", "--eps", "0.12"],
+     "lm30.csv: --eps 0.12 contradicts the file's 'Contraction: 5 %' (line 2), eps 0.05: "
+     "expected one of them; without --eps the file's is used"),
+    (["--D0", "30", "--L0", "300", "--eps", "0.05"],
+     "lm30.csv: --L0 300 contradicts the file's 'L0 = 282 mm' (line 3), L0 282 mm: expected "
+     "one of them; without --L0 the file's is used"),
+    # the tube's outer diameter given for its inner one
+    (["--D0", "36", "--L0", "282", "--eps", "0.05"],
+     "lm30.csv: --D0 36 contradicts the file's 'Inner diameter: 30 mm' (line 4), D0 30 mm"),
+])
+def test_an_option_that_contradicts_the_files_header_is_refused(argv, message, tmp_path,
+                                                                mkm_cli):
+    # the options were taken and the header's 5 % and 282 mm silently dropped: a run of
+    # another muscle state, which identify then fits
+    path = _lab_sheet(tmp_path / "lm30.csv", 0.05, *LAB_HEADER)
+    code, out, err = mkm_cli(["import", str(path), "--id", "lm30", "--t0", "3", *argv,
+                              "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"mkm import: error: {message}" in err
+    assert not (tmp_path / "runs").exists()
+
+
+def test_what_a_files_header_declares_is_the_runs_muscle(tmp_path, mkm_cli):
+    # the rest length, the tube and the eps only the comment lines hold: taken, and said
+    path = _lab_sheet(tmp_path / "lm30.csv", 0.05, *LAB_HEADER)
+    (run,), err = _import(mkm_cli, path, "--id", "lm30", "--t0", "3")
+    muscle = run.meta.muscle
+    assert (muscle.L0_mm, muscle.D0_mm, muscle.eps) == (282.0, 30.0, 0.05)
+    assert ("lm30.csv: 7 step(s) (5 rising, 2 falling), one table row each; L0 282 mm from the "
+            "file's 'L0 = 282 mm' (line 3); D0 30 mm from the file's 'Inner diameter: 30 mm' "
+            "(line 4); eps 0.05 from the file's 'Contraction: 5 %' (line 2)") in err
+    assert run.meta.imported_from["declared_in_header"]["eps"] == {
+        "text": "Contraction: 5 %", "at": "line 2", "eps": 0.05, "taken": True}
+    # the thick-wall model at that state scores the table to its forces' rounding (0.005 N of
+    # the 103 N at 0.5 bar)
+    assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
+
+
+@pytest.mark.parametrize("eps", ["5.4%", "0.046"])
+def test_an_option_within_the_headers_rounding_agrees(eps, tmp_path, mkm_cli):
+    # 'Contraction: 5 %' holds 4.5-5.5 %: the option's more digits are taken, nothing said
+    path = _lab_sheet(tmp_path / "lm30.csv", 0.05, *LAB_HEADER)
+    (run,), err = _import(mkm_cli, path, "--id", "lm30", "--t0", "3", "--D0", "30.2",
+                          "--L0", "282.4", "--eps", eps)
+    assert run.meta.muscle.eps == pytest.approx(float(eps.rstrip("%")) / (
+        100 if eps.endswith("%") else 1))
+    assert "from the file's" not in err
+    assert run.meta.imported_from["declared_in_header"]["eps"]["taken"] is False
+
+
+def test_a_tdms_files_properties_declare_its_muscle(tmp_path, mkm_cli):
+    # NI's way to keep what a lab writes above a table's header: the group's and a channel's
+    # properties, read as a text file's comment lines are
+    frame, _, _ = _ramp()
+    path = _tdms(tmp_path / "ramp.tdms", {"Log": {
+        "Time": (frame["t (s)"], {"unit_string": "s"}),
+        "Pressure": (frame["p_psi"], {"unit_string": "psi"}),
+        "Force": (frame["Force (N)"], {"unit_string": "N", "L0_mm": 282.0})}},
+        properties={"": {"name": "LM-30 run 4"}, "Log": {"Contraction [%]": 12.2}})
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE[:-2], "--L0", "300", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert ("ramp.tdms (group 'Log'): --L0 300 contradicts the file's 'L0_mm: 282' (the "
+            "property 'L0_mm' of channel 'Force'), L0 282 mm") in err
+    (run,), err = _import(mkm_cli, path, *MUSCLE[:-2])
+    assert (run.meta.muscle.L0_mm, run.meta.muscle.eps) == (282.0, pytest.approx(0.122))
+    assert ("eps 0.122 from the file's 'Contraction [%]: 12.2' (the property 'Contraction [%]' "
+            "of its group)") in err
+
+
+
 def _pre_conditioned(top_hold_s: float, step_holds_s: list[float], seed: int = 5):
     """A 10 Hz record at eps 0 as a bench pre-conditions its muscle: 5 s vented, a cycle to
     2.5 bar held ``top_hold_s`` and vented for 3 s, then a staircase 0.5-2.5-0.5 bar, each
