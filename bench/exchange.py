@@ -987,10 +987,7 @@ def _muscle(given: dict, group: _Group):
         if values.get(key) is None:
             # the muscle's id and sizes come from mkm export's workbook only, never a column
             source = ("a table's columns give none; mkm export's workbook carries it"
-                      if key == "id" else
-                      "a table's columns give none; mkm export's workbook carries it, or a "
-                      f"line above the header, '{key.removesuffix('_mm')} = 30 mm'"
-                      if key in ("D0_mm", "t0_mm") else
+                      if key in ("id", "D0_mm", "t0_mm") else
                       f"the table has no {'eps or length' if key == 'eps' else key} column")
             raise ValueError(f"{where}no {key}: give {option} ({source}"
                              f"{_look_alike(group, key)})")
