@@ -36,6 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
+from mkm.bench.series import PLATEAU_TOLERANCE_BAR
 from mkm.bench.settings import TEXT_END_PADDING, saved_text
 from mkm.core.guards import table_file
 from mkm.core.records import file_sha256
@@ -3001,6 +3002,8 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
             if role in found:
                 column_values(table, found[role])
         read.append((path, table, found))
+    pressures = [column_values(table, found["pressure"]) if "pressure" in found else None
+                 for _, table, found in read]
     first_path, first, first_found = read[0]
     shape = {r: (c.header, c.describe()["unit"]) for r, c in first_found.items()}
     for path, _table, found in read[1:]:
@@ -3077,21 +3080,47 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
                       "clock_as_read_s": [float(times[0]), float(times[-1])],
                       "placed_at_s": float(placed[j])})
     names = [f["file"] for f in files]
+    gaps = [placed[j + 1] - (placed[j] + clocks[order[j]][0][-1] - clocks[order[j]][0][0])
+            for j in range(len(order) - 1)]
+    # the level a hold keeps across each join (a logger rolling its file mid-hold), or None
+    held = [_held_across(pressures[a], pressures[b]) for a, b in itertools.pairwise(order)]
+    for j, (gap, level) in enumerate(zip(gaps, held, strict=True), start=1):
+        files[j]["join"] = {"gap_s": float(gap), "within_hold_bar": level}
+    within = [j for j, level in enumerate(held) if level is not None]
     if clock == "continues":
-        gaps = [placed[j + 1] - (placed[j] + clocks[order[j]][0][-1] - clocks[order[j]][0][0])
-                for j in range(len(order) - 1)]
+        # a join a few samples late within a hold: the samples the logger lost, named
+        lost = [j for j in range(len(gaps))
+                if gaps[j] > JOIN_LATE_INTERVALS * _interval_s(clocks[order[j]][0])]
         note = (f"{len(files)} files joined on their clock, which continues from one to the "
                 f"next: ordered by it, {names[0]} first, the time between files as logged "
-                f"({min(gaps):.3g}-{max(gaps):.3g} s)")
+                f"({min(gaps):.3g}-{max(gaps):.3g} s)"
+                + "".join(f"; {names[j + 1]} begins {gaps[j]:.3g} s after {names[j]}'s last "
+                          "sample" + (f", within the hold at {held[j]:.3g} bar: that much of "
+                                      "it not logged" if held[j] is not None else "")
+                          for j in lost[:JOIN_GAPS_SAID])
+                + (f" (and {len(lost) - JOIN_GAPS_SAID} more such gaps)"
+                   if len(lost) > JOIN_GAPS_SAID else "")
+                + (f"; {len(within) - len(set(within) & set(lost))} join(s) within a hold, "
+                   "the clock on by one sample: one hold" if set(within) - set(lost) else ""))
     else:
+        steps = len(within) < len(held)
         note = (f"{len(files)} files joined in the order given ({names[0]} first), each "
                 "file's clock restarting at its start: "
                 + (f"each placed {between_files_s:g} s (--between-files) after the one before"
                    if between_files_s is not None else
                    "the time between them unknown, each placed one sample after the one "
-                   "before, its step taken as the file begins: each hold's creep timed from its "
-                   "file's start; --between-files SECONDS gives the time from one file's last "
-                   "sample to the next one's first"))
+                   "before" + (", its step taken as the file begins: each hold's creep timed "
+                               "from its file's start" if steps else "")
+                   + "; --between-files SECONDS gives the time from one file's last sample to "
+                   "the next one's first")
+                + (f"; {len(within)} of the {len(held)} joins within a hold (the pressure at "
+                   "one level across each, as a logger that rolls its file every few minutes "
+                   f"writes it: {', '.join(names[j + 1] for j in within[:JOIN_GAPS_SAID])}"
+                   + (", ..." if len(within) > JOIN_GAPS_SAID else "")
+                   + "), each joined as one hold"
+                   + (f", the {between_files_s:g} s of --between-files put into it"
+                      if between_files_s is not None else
+                      ", any time lost between the files unknown") if within else ""))
     source = first_path.with_name(f"{first_path.name} and {len(files) - 1} more")
     # every file's header lines, each named with its file (they agree: checked above)
     preamble = [(f"{path.name}, " + (f"line {at}" if isinstance(at, int) else str(at)), line)
@@ -3100,6 +3129,39 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
                     preamble=preamble)
     found = {**first_found, "time": Column("time", index, first_found["time"].header, "s")}
     return JoinedFiles(table, found, files, clock, note)
+
+
+#: the samples at each side of a join whose pressures judge whether it falls within a hold
+JOIN_SAMPLES = 5
+#: a join of a continuing clock later than this many sampling intervals is said: samples lost
+JOIN_LATE_INTERVALS = 2.0
+#: the joins named in the note (the others counted)
+JOIN_GAPS_SAID = 3
+
+
+def _interval_s(times: np.ndarray) -> float:
+    """A file's sampling interval [s]: its times' median step (0 for one sample)."""
+    return float(np.median(np.diff(times))) if times.size > 1 else 0.0
+
+
+def _held_across(before: np.ndarray | None, after: np.ndarray | None) -> float | None:
+    """The pressure [bar] a hold keeps across the join of two files (``before``'s pressures,
+    then ``after``'s): the last and the first :data:`JOIN_SAMPLES` readings each within a
+    staircase's plateau band (:data:`mkm.bench.series.PLATEAU_TOLERANCE_BAR`) of their median,
+    the two medians within it of each other (a logger that rolled its file mid-hold); None
+    where the pressure steps at the join (a file per step) or moves (a ramp), or a file has too
+    few readings."""
+    if before is None or after is None:
+        return None
+    last, first = before[np.isfinite(before)][-JOIN_SAMPLES:], \
+        after[np.isfinite(after)][:JOIN_SAMPLES]
+    if last.size < JOIN_SAMPLES or first.size < JOIN_SAMPLES:
+        return None
+    a, b = float(np.median(last)), float(np.median(first))
+    if (np.max(np.abs(last - a)) > PLATEAU_TOLERANCE_BAR or np.max(np.abs(first - b))
+            > PLATEAU_TOLERANCE_BAR or abs(a - b) > PLATEAU_TOLERANCE_BAR):
+        return None
+    return round((a + b) / 2, 6)
 
 
 def _span(first_s: float, last_s: float, origin) -> str:

@@ -3145,6 +3145,59 @@ def test_a_tdms_files_properties_declare_its_muscle(tmp_path, mkm_cli):
 
 
 
+def _rolled_files(folder: Path, clock: str, lost_s: float = 0.0):
+    """A 10 Hz staircase (0.5-1.5-0.5 bar) logged by a logger that rolls its file every 37 s,
+    the join within the 1.5 bar hold (32-44 s): each file's clock restarting at 0
+    (``restart``) or date-times going on (``date``), ``lost_s`` of samples lost at the join;
+    the files and the whole record as one file."""
+    t, p, force, _ = _staircase_10_hz([0.5, 1.0, 1.5, 1.0, 0.5], tare_N=2.0)
+    folder.mkdir()
+    start = datetime.datetime(2026, 12, 5, 14, 5, 0)
+    whole = pd.DataFrame({"Zeit [s]": np.round(t, 1), "Druck [bar]": p, "Kraft [N]": force})
+    whole.to_csv(folder / "whole.csv", index=False)
+    parts = [slice(0, 370), slice(370 + round(10 * lost_s), None)]
+    for k, part in enumerate(parts, start=1):
+        frame = whole.iloc[part].copy()
+        if clock == "restart":
+            frame["Zeit [s]"] = np.round(frame["Zeit [s]"] - frame["Zeit [s]"].iloc[0], 1)
+        else:
+            frame.insert(0, "Date/Time", [(start + datetime.timedelta(seconds=float(s)))
+                                          .isoformat(sep=" ") for s in frame.pop("Zeit [s]")])
+        frame.to_csv(folder / f"log_{k:03d}.csv", index=False)
+    return folder
+
+
+def test_a_file_rolled_mid_hold_is_joined_as_one_hold(tmp_path, mkm_cli):
+    # each file's clock restarts at 0, the second file's first samples the hold the first's
+    # ended in: said as one hold joined, where the line said 'its step taken as the file
+    # begins: each hold's creep timed from its file's start', a file per step's reading
+    folder = _rolled_files(tmp_path / "LM30", "restart")
+    (run,), err = _import(mkm_cli, folder / "log_*.csv", *MUSCLE, "--eps", "0")
+    assert "its step taken as the file begins" not in err
+    assert ("1 of the 1 joins within a hold (the pressure at one level across each, as a logger "
+            "that rolls its file every few minutes writes it: log_002.csv), each joined as one "
+            "hold, any time lost between the files unknown") in err
+    join = run.meta.imported_from["files"][1]["join"]
+    assert join["within_hold_bar"] == pytest.approx(1.5, abs=0.003)  # the gauge's noise
+    # one sample apart, the clock goes on as logged: the steps of the whole record, each
+    (whole,), _ = _import(mkm_cli, folder / "whole.csv", *MUSCLE, "--eps", "0")
+    columns = ["pressure_bar_mean", "force_N_mean", "start_s", "end_s"]
+    np.testing.assert_allclose(run.steps[columns], whole.steps[columns], rtol=1e-9,
+                               atol=1e-6)
+
+
+def test_samples_lost_mid_hold_between_rolled_files_are_named(tmp_path, mkm_cli):
+    # date-times go on from file to file, 4 s lost as the logger opened its second file, in
+    # the middle of the 1.5 bar hold: named (the line said only '0.1-4.1 s' between files)
+    folder = _rolled_files(tmp_path / "LM30", "date", lost_s=4.0)
+    (run,), err = _import(mkm_cli, folder / "log_*.csv", *MUSCLE, "--eps", "0")
+    assert ("log_002.csv begins 4.1 s after log_001.csv's last sample, within the hold at "
+            "1.5 bar: that much of it not logged") in err
+    assert run.meta.imported_from["files"][1]["join"]["gap_s"] == pytest.approx(4.1)
+    # the hold keeps its level on both sides: one step at 1.5 bar, not two
+    assert (np.abs(run.steps["pressure_bar_mean"] - 1.5) < 0.01).sum() == 1
+
+
 def _pre_conditioned(top_hold_s: float, step_holds_s: list[float], seed: int = 5):
     """A 10 Hz record at eps 0 as a bench pre-conditions its muscle: 5 s vented, a cycle to
     2.5 bar held ``top_hold_s`` and vented for 3 s, then a staircase 0.5-2.5-0.5 bar, each
