@@ -3145,6 +3145,31 @@ def test_a_tdms_files_properties_declare_its_muscle(tmp_path, mkm_cli):
 
 
 
+
+def test_a_workbooks_sheets_each_declaring_their_eps_are_runs_of_their_own(tmp_path, mkm_cli):
+    # a sheet per state, each titled with its contraction and the rest length, no eps column:
+    # each sheet's own (without them the sheets took one --eps, or none was found)
+    import openpyxl
+
+    book = openpyxl.Workbook()
+    book.remove(book.active)
+    for eps in (0.0, 0.1, 0.2):
+        sheet = book.create_sheet(f"Versuch {100 * eps:g}")
+        sheet.append(["Muskel LM-30, Ruhelänge 282 mm"])
+        sheet.append(["Kontraktion [%]", 100 * eps])
+        sheet.append(["Druck [bar]", "Kraft [N]"])
+        for p, f in zip(PRESSURES, thickwall_N(PRESSURES, eps), strict=True):
+            sheet.append([float(p), round(float(f), 2)])
+    book.save(tmp_path / "versuche.xlsx")
+    runs, err = _import(mkm_cli, tmp_path / "versuche.xlsx", "--id", "lm30", "--D0", "30",
+                        "--t0", "3")
+    assert [(r.meta.muscle.eps, r.meta.muscle.L0_mm) for r in runs] == [
+        (0.0, 282.0), (0.1, 282.0), (0.2, 282.0)]
+    assert "eps 0.2 from the file's 'Kontraktion [%] 20' (line 2)" in err
+    # each sheet's forces the thick-wall model's at its own eps, to their rounding
+    assert _scores(tmp_path, runs)["max_abs_err_pct"].max() < 0.01
+
+
 def _rolled_files(folder: Path, clock: str, lost_s: float = 0.0):
     """A 10 Hz staircase (0.5-1.5-0.5 bar) logged by a logger that rolls its file every 37 s,
     the join within the 1.5 bar hold (32-44 s): each file's clock restarting at 0
