@@ -380,8 +380,8 @@ def test_a_table_with_too_few_repeats_is_not_judged_and_says_how_many(tmp_path):
 
 def test_judging_by_repeats_calls_a_fitting_model_a_misfit_as_rarely_as_the_noise_says():
     """The F test of the repeats' means against their own scatter: where the model is the
-    truth, P(misfit) is MISFIT_P (a chi-square against the scattered noise, as if known, would
-    call it in 3.4 % of tables of 11 pressures on 10 degrees of freedom)."""
+    truth, its probability is the one the test is made at (a chi-square against the scatter, as
+    if it were the known noise, calls a fitting model a misfit more often)."""
     rng = np.random.default_rng(11)
     groups = [np.arange(3 * g, 3 * g + 3) for g in range(5)] + [np.array([15])]
     dof = sum(g.size - 1 for g in groups)
