@@ -78,6 +78,9 @@ class Branch:
     #: each step's mean residual and its noise [N] (the discrepancy's estimate takes them)
     residual_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
     noise_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
+    #: where the noise was estimated (a table's repeats): the chi-square of ``nu`` degrees of
+    #: freedom as probable as ``p_value``, which all branches' p-value adds; None: ``chi2``
+    p_chi2: float | None = None
 
     @property
     def reduced(self) -> float:
@@ -133,7 +136,8 @@ class Goodness:
     @property
     def p_value(self) -> float:
         """P(chi2 of all steps >= observed | the noise alone)."""
-        return float(stats.chi2.sf(self.chi2, self.nu)) if self.nu > 0 else math.nan
+        total = sum(b.chi2 if b.p_chi2 is None else b.p_chi2 for b in self.branches)
+        return float(stats.chi2.sf(total, self.nu)) if self.nu > 0 else math.nan
 
     @property
     def misfit(self) -> list[Branch]:
@@ -361,17 +365,17 @@ def assess(runs, fit) -> Goodness:
             s = np.maximum(s, 1e-12)
             if repeated is None:
                 chi2, nu = chi_square(r, s, tare), float(pick.sum())
+                p, p_chi2 = float(stats.chi2.sf(chi2, nu)), None
             else:
-                chi2, nu = _from_repeats(mean[here], repeated, [
+                chi2, nu, p, p_chi2 = _from_repeats(mean[here], repeated, [
                     g for g in repeat_groups(steps, usable)
                     if steps["direction"].iloc[int(g[0])] == direction], tare)
             order = np.argsort(steps["pressure_bar_mean"].to_numpy()[pick], kind="stable")
             n_runs, runs_p = runs_test(r[order])
             branches.append(Branch(
-                run.name, branch, int(pick.sum()), chi2, nu,
-                float(stats.chi2.sf(chi2, nu)) if nu > 0 else math.nan, n_runs, runs_p,
-                float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2))), r,
-                np.hypot(s, tare)))
+                run.name, branch, int(pick.sum()), chi2, nu, p if nu > 0 else math.nan,
+                n_runs, runs_p, float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2))),
+                r, np.hypot(s, tare), p_chi2))
     if not branches:
         return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE + "".join(
             "; too few repeats in a table to judge it by: "
@@ -443,17 +447,20 @@ def repeat_noise(name: str, steps, residual: np.ndarray, usable: np.ndarray) -> 
                    sum(g.size for g in groups), len(groups))
 
 
-def _from_repeats(residual, repeats: Repeats, groups, tare: float) -> tuple[float, float]:
-    """A branch's chi-square and degrees of freedom judged against a noise its repeats
-    measured: the groups' mean residuals against ``noise_N`` over root n (and the tare every
-    step shares), whose chi-square over the groups' number ``G`` is F(G, dof) distributed
-    where the model fits (the noise estimated, not known); returned as the chi-square of ``G``
-    degrees of freedom of the same probability, so branches and runs add up as the others do."""
+def _from_repeats(residual, repeats: Repeats, groups, tare: float):
+    """A branch's chi-square, degrees of freedom, p-value and the chi-square as probable, judged
+    against a noise its repeats measured: the groups' mean residuals against the repeats' noise
+    over root n (and the tare every step shares), a chi-square over the groups' number ``G``
+    that is ``G`` F(G, dof) distributed where the model fits (the noise estimated, not known).
+    The chi-square itself measures the misfit (the Birge ratio widens by it); its p-value is
+    the F test's, and the chi-square of ``G`` degrees of freedom as probable is what all
+    branches' p-value adds."""
     means = np.array([residual[g].mean() for g in groups])
     spread = max(repeats.noise_N, 1e-12) / np.sqrt([g.size for g in groups])
     chi2, n = chi_square(means, spread, tare), len(groups)
     p = float(stats.f.sf(chi2 / n, n, repeats.dof))
-    return float(stats.chi2.isf(p, n)) if p > 0 else math.inf, float(n)
+    # beyond the F tail's floating point the chi-square itself, larger still
+    return chi2, float(n), p, (float(stats.chi2.isf(p, n)) if p > 0 else chi2)
 
 
 #: what runs show that a fit may leave out, by the ``--params`` group that fits it

@@ -385,15 +385,18 @@ def test_judging_by_repeats_calls_a_fitting_model_a_misfit_as_rarely_as_the_nois
     rng = np.random.default_rng(11)
     groups = [np.arange(3 * g, 3 * g + 3) for g in range(5)] + [np.array([15])]
     dof = sum(g.size - 1 for g in groups)
-    calls = 0
+    calls = naive = 0
     for _ in range(4000):
         residual = rng.normal(0.0, 2.0, 16)
         found = goodness.Repeats("r", float(np.sqrt(sum(
             np.sum((residual[g] - residual[g].mean()) ** 2) for g in groups) / dof)), dof, 15, 5)
-        chi2, nu = goodness._from_repeats(residual, found, groups, 0.0)
-        calls += stats.chi2.sf(chi2, nu) < 0.05
-    # P = 0.05 by construction: 200 of 4000, binomial sd 14
-    assert abs(calls - 200) < 45
+        chi2, nu, p, p_chi2 = goodness._from_repeats(residual, found, groups, 0.0)
+        assert stats.chi2.sf(p_chi2, nu) == pytest.approx(p, rel=1e-6)
+        calls += p < 0.01
+        naive += stats.chi2.sf(chi2 + dof, nu + dof) < 0.01
+    # P = 0.01 by construction: 40 of 4000, binomial sd 6.3; every step's residual against the
+    # scatter as if known (the repeats' own chi-square, dof, added) calls 130-150 (seeds 11-13)
+    assert abs(calls - 40) < 20 and naive > 100
 
 
 def test_a_slack_muscle_reading_a_force_offers_the_fit_of_the_zero_until_it_is_fitted():
