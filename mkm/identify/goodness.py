@@ -28,6 +28,10 @@ the intervals are at least as wide as the misfit says the model's errors are. It
 widening, not a model of the discrepancy: a systematic error (a monitor offset, a braid the
 model does not have) biases the estimate as well, which the warning line says.
 
+A step table without a declared accuracy has one value per step; where its sweeps repeat its
+pressures, the scatter of the repeats' residuals is its noise (:func:`repeat_noise`), estimated,
+so its branches are judged by an F test (:func:`_from_repeats`).
+
 The bench's instrument tolerances (the load cell's gain, the monitor's accuracy) are not noise
 here: they are errors the data share, and a fit that cannot absorb them shows them as misfit.
 """
