@@ -37,9 +37,10 @@ between the regulator's outlet (where its sensor and the monitor read) and the m
 muscle's pressure behind the outlet's by a first-order lag of ``line_tau_s``: on a ramp the force
 trails the monitored pressure, a loop between the branches that is not friction. A rubber that
 softens on its first loading (``mullins_fraction``, the Mullins effect) pulls the force of a
-stiffer rubber while its pressure rises above every pressure it has fallen from in the run, and
-the truth's at and below them: a staircase's first rise pulls less than its repeats at the same
-pressure, and from its top on the muscle is the preconditioned one.
+stiffer rubber while its pressure rises above every pressure it has fallen from in the run
+(taking it over within :data:`MULLINS_BAND` of that pressure above it), and the truth's at and
+below them: a staircase's first rise pulls less than its repeats at the same pressure, and from
+its top on the muscle is the preconditioned one.
 
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
@@ -81,6 +82,10 @@ USB6001_RANGE_V = USB6001.ai_range_V
 
 LSB_V = USB6001.ai_lsb_V  # USB-6001: 14 bits over +-10 V = 1.22 mV
 STANDARD_GRAVITY = 9.80665  # m/s^2, for masses hung on the load cell
+#: a rubber softened up to a pressure takes its first loading's stiffness back over this
+#: share of that pressure above it (the fresh and softened curves meet, as in Ogden and
+#: Roxburgh's model): a staircase a few mbar above its preconditioning pulls as preconditioned
+MULLINS_BAND = 0.1
 MANOMETER_RESOLUTION_BAR = 0.05  # smallest division of a 2.5 bar class-1 dial (paper's NUOVA FIMA)
 
 
@@ -350,8 +355,12 @@ class SimMuscleBench:
             if self.muscle_pressure_bar < self.highest_bar:
                 self.softened_bar = self.highest_bar
             self.highest_bar = max(self.highest_bar, self.muscle_pressure_bar)
-            if self.muscle_pressure_bar > self.softened_bar:  # loading its rubber afresh
-                static = float(np.interp(self.muscle_pressure_bar, self.first_p, self.first_F))
+            above_bar = self.muscle_pressure_bar - self.softened_bar
+            if above_bar > 0:  # loading its rubber afresh
+                fresh = float(np.interp(self.muscle_pressure_bar, self.first_p, self.first_F))
+                share = (min(above_bar / (MULLINS_BAND * self.softened_bar), 1.0)
+                         if self.softened_bar > 0 else 1.0)
+                static += share * (fresh - static)
         self.hysteretic_N, self.relaxed_N = advance(
             self.hysteretic_N, self.relaxed_N, static, s.hysteresis_fraction, s.creep_fraction,
             self.relax)

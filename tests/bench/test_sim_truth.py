@@ -461,7 +461,9 @@ def test_a_rubber_that_softens_on_its_first_loading_pulls_less_on_its_first_rise
     0.85 times the truth's, so on its first rise it pulls the thick-wall force of that stiffer
     rubber (less: the wall resists the braid), some 14 N below the truth's at eps 0.1; back
     below that pressure, and on the repeat's rise to it, it pulls the truth's (the
-    preconditioned muscle), within the table's interpolation and one ADC step (0.35 N)."""
+    preconditioned muscle), within the table's interpolation and one ADC step (0.35 N). Above
+    the highest pressure it fell from it takes the stiffer rubber back within a tenth of that
+    pressure: half way at 2.1 bar after 2 bar, wholly at 2.3."""
     c = quiet(config.replace(muscle={"eps": 0.1}), model="thickwall",
               truth={"mullins_fraction": 0.15})
     m = c.muscle
@@ -486,6 +488,9 @@ def test_a_rubber_that_softens_on_its_first_loading_pulls_less_on_its_first_rise
     np.testing.assert_allclose(later, [thickwall(1.0), 0.0, thickwall(1.0), thickwall(2.0)],
                                atol=0.35)
     assert thickwall(1.0) - first[0] > 10.0
+    beyond = [hold(2.1), hold(2.3)]
+    np.testing.assert_allclose(beyond, [(thickwall(2.1) + thickwall(2.1, 1 / 0.85)) / 2,
+                                        thickwall(2.3, 1 / 0.85)], atol=0.35)
     assert "mullins_fraction 0.15" in describe_physics(c)["summary"]
     with pytest.raises(ValueError, match=r"^sim.truth.mullins_fraction=0.6 is invalid: "
                                          r"expected 0 to 0.5 \(a fraction of the rubber's "
