@@ -35,7 +35,12 @@ errors at once:
   on ramps, one continuous ramp per eps up to the plan's top pressure and back, reaching it
   in 60-120 s (:func:`mkm.bench.sim.logged_ramp`, as a lab's logger records it), imported
   with the instruments' declared accuracy (the load cell's 0.05 % of its capacity, a 0.25 %
-  class transducer's 0.25 % of the monitor's full scale) so that the fit is judged.
+  class transducer's 0.25 % of the monitor's full scale) so that the fit is judged;
+- ``first-cycle softening`` and ``first-cycle softening with repeats`` (drawn only when asked
+  for by name): the rubber loses 5-20 % of its stiffness once a pressure has been exceeded
+  (the Mullins effect, ``[sim.truth] mullins_fraction``; the truth is the preconditioned
+  muscle), the runs not preconditioned: the plan's single staircase, or, with repeats, the
+  staircase twice (``[sequence] repeats = 2``), whose first rise pulls less than its repeat.
 
 The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
 the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
@@ -78,7 +83,8 @@ from mkm.bench.sim_settings import remove_simulator_settings
 
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubing lag",
-              "tubing lag on ramps")
+              "tubing lag on ramps", "first-cycle softening",
+              "first-cycle softening with repeats")
 #: what ``--departures`` draws by default: the recorded results' set
 DEFAULT_DEPARTURES = DEPARTURES[:3]
 #: the fields of a draw's printed line
@@ -109,6 +115,9 @@ def depart(muscle: dict, departure: str) -> dict:
         truth["line_tau_s"] = float(rng.uniform(0.2, 2.0))
         if departure.endswith("ramps"):
             out["ramp_to_top_s"] = float(rng.uniform(60.0, 120.0))
+    elif departure.startswith("first-cycle softening"):
+        truth["mullins_fraction"] = float(rng.uniform(0.05, 0.20))
+        out["repeats"] = 2 if departure.endswith("repeats") else 1
     return out
 
 
@@ -147,6 +156,8 @@ def acquire_blind(muscle: dict, declared: dict, out: Path) -> list[Path]:
     simulated = {**declared, "eps": [true_eps(muscle, e) for e in declared["eps"]]}
     for k, eps in enumerate(declared["eps"]):
         config = config_for(muscle, simulated, simulated["eps"][k], k)
+        if "repeats" in muscle:
+            config = config.replace(sequence={"repeats": muscle["repeats"]})
         if "ramp_to_top_s" in muscle:
             paths.append(ramp_run(muscle, config, out))
             continue
@@ -170,6 +181,9 @@ def departure_value(muscle: dict) -> str:
                 f"({100 * (muscle['declared_L0_mm'] / muscle['L0_mm'] - 1):+.2f} %)")
     if muscle["departure"] == "sliding braid":
         return f"sliding, friction {muscle['hysteresis_fraction']:.3f}"
+    if muscle["departure"].startswith("first-cycle softening"):
+        return (f"softening {100 * t['mullins_fraction']:.1f} %, {muscle['repeats']} "
+                f"staircase{'s' if muscle['repeats'] > 1 else ''} per run")
     if muscle["departure"].startswith("tubing lag"):
         ramp = (f", ramps reaching the top in {muscle['ramp_to_top_s']:.0f} s"
                 if "ramp_to_top_s" in muscle else "")

@@ -596,8 +596,10 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     frame yielding under the muscle's pull before both where it explains the misfit
     (:func:`mkm.identify.procedure.frame_hint`); a lag between the monitor and the muscle
     before all (``cautions``' :func:`mkm.identify.procedure.lag_hint`): a fit with friction for
-    the lag's loop."""
-    lag = [c["verdict"] for c in cautions if c["what"] == "lag between monitor and muscle"]
+    the lag's loop; so does a first rise stiffer than its repeats
+    (:func:`mkm.identify.procedure.softening_hint`)."""
+    lag = [c["verdict"] for c in cautions if c["what"] in ("lag between monitor and muscle",
+                                                           "first-cycle softening")]
     if lag:
         return f"first, {lag[0]}; then "
     if goodness.frame:
