@@ -128,6 +128,10 @@ SOFTENING_MAX = 1.0
 #: under a tenth of that (a preconditioning that stopped a few mbar short of the top step) is
 #: no procedure to change
 SOFTENING_MIN = 0.005
+#: without repeats, a first rise lower than the falling branch is named only where it takes at
+#: least this share of the misfit's chi-square excess away (friction's loop, a monitor's
+#: hysteresis part the branches too)
+SOFTENING_TAKES = 0.5
 #: a first-cycle softening is named where fitting it lowers the chi-square by at least this
 #: (and more than a zero drifting with time does): three standard deviations of one parameter's
 SOFTENING_CHI2 = 9.0
@@ -911,39 +915,46 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
             "shift": {n: float(v) for n, v in zip(best.names, step, strict=True)}}
 
 
-def first_rise_repeated(run) -> np.ndarray:
+def first_rise(run) -> tuple[np.ndarray, np.ndarray]:
     """Per step of ``run``: whether it is on the run's first rise (its steps up to the first
-    that is not above the one before) at a set pressure a later rising step repeats."""
+    that is not above the one before), where the run goes on past it; and whether a later
+    rising step repeats its set pressure."""
     direction = run.steps["direction"].to_numpy()
     set_bar = run.steps["set_pressure_bar"].to_numpy(dtype=float)
     rising = (direction == "up") & np.r_[True, set_bar[1:] > set_bar[:-1]]
     end = int(np.argmin(rising)) if not rising.all() else rising.size
-    later = set_bar[end:][direction[end:] == "up"]
     first = np.zeros(set_bar.size, dtype=bool)
-    if later.size:
-        first[:end] = np.isclose(set_bar[:end, None], later[None, :], rtol=0.0,
-                                 atol=1e-6).any(axis=1)
-    return first
+    first[:end] = end < set_bar.size
+    later = set_bar[end:][direction[end:] == "up"]
+    repeated = first & np.isclose(set_bar[:, None], later[None, :], rtol=0.0,
+                                  atol=1e-6).any(axis=1) if later.size else first & False
+    return first, repeated
 
 
 def softening_hint(source, runs, best, fitness) -> dict | None:
-    """Where runs repeat their staircase: whether the first rise pulls less than the repeats
-    at the same pressures, as a rubber that softens on its first loading does (the Mullins
-    effect: a muscle not preconditioned is stiffer on its first rise to a new highest
-    pressure than on every later one).
+    """Whether the first rise pulls less than the repeats at the same pressures, as a rubber
+    that softens on its first loading does (the Mullins effect: a muscle not preconditioned is
+    stiffer on its first rise to a new highest pressure than on every later one); where no run
+    repeats its staircase, less than the falling branch beyond the fitted friction.
 
     The first rise's rubber ``1 + a`` times as stiff moves its holds' force by a column from one
-    trace at :data:`SOFTENING_STEP` (the holds of its steps that a later rise repeats, zero
-    elsewhere), fitted with ``a >= 0`` through a linearised refit of the fit's own parameters
-    (:func:`_refitted`); friction and creep, the same on every rise, are the fit's. A zero
-    drifting with time (a column of each hold's time, either sign) also parts the first cycle
-    from its repeat: named (its record, note ``said``, ``verdict`` and the refit's ``shift`` of
-    every fitted parameter, the model-form term ``softening`` of the intervals: the truth is the
-    preconditioned muscle) where the first rise is at least :data:`SOFTENING_MIN` stiffer and
-    that lowers the chi-square by :data:`SOFTENING_CHI2` and more than the drift does; else
-    None."""
-    firsts = [first_rise_repeated(run) for run in runs]
+    trace at :data:`SOFTENING_STEP` (the holds of its steps a later rise repeats, where any
+    does, else of all of them; zero elsewhere), fitted with ``a >= 0`` through a linearised
+    refit of the fit's own parameters (:func:`_refitted`); friction and creep, the same on
+    every rise, are the fit's. A zero drifting with time (a column of each hold's time, either
+    sign) also parts the first rise from what follows it. Named (its record, note ``said``,
+    ``verdict`` and the refit's ``shift`` of every fitted parameter, the model-form term
+    ``softening`` of the intervals: the truth is the preconditioned muscle) where the first
+    rise is at least :data:`SOFTENING_MIN` stiffer and that lowers the chi-square by
+    :data:`SOFTENING_CHI2` and more than the drift does; against the falling branch alone
+    (a loop friction makes too), only in a misfit whose excess it takes
+    :data:`SOFTENING_TAKES` of away. Else None."""
+    rises = [first_rise(run) for run in runs]
+    repeats = any(repeated.any() for _, repeated in rises)
+    firsts = [repeated if repeats else first for first, repeated in rises]
     if not fitness.judged or not any(f.any() for f in firsts):
+        return None
+    if not repeats and not fitness.misfit:
         return None
     stiffer = {**best.values, "rubber_scale": best.values["rubber_scale"] * (1 + SOFTENING_STEP)}
     holds = [run.hold >= 0 for run in runs]
@@ -970,30 +981,39 @@ def softening_hint(source, runs, best, fitness) -> dict | None:
     drift_chi2 = min(base, optimize.minimize_scalar(lambda n: refit_chi2(n, drift)).fun)
     lowered, drift_lowered = base - with_it, base - drift_chi2
     if not (stiffness >= SOFTENING_MIN and lowered >= SOFTENING_CHI2
-            and lowered > drift_lowered):
+            and lowered > drift_lowered
+            and (repeats or lowered >= SOFTENING_TAKES * (base - fitness.nu))):
         return None
     gap_N = stiffness / SOFTENING_STEP * float(np.max(np.abs(column)))
     softened_pct = 100 * stiffness / (1 + stiffness)
     step = _step(best, best.residual_N + stiffness / SOFTENING_STEP * column)
-    advice = ("precondition the muscle (cycle it to its top pressure 3-5 times before the "
-              "staircase: [sequence] preconditioning_cycles) and acquire again")
-    return {"what": "first-cycle softening",
+    precondition = ("precondition the muscle (cycle it to its top pressure 3-5 times before the "
+                    "staircase: [sequence] preconditioning_cycles)")
+    if repeats:
+        seen = "the first rise pulls less than the repeats at the same pressures"
+        cause = "the rubber softened after its first loading"
+        advice = f"{precondition} and acquire again"
+    else:
+        seen = "the first rise pulls less than the falling branch beyond the fitted friction"
+        cause = "as a rubber that softened after its first loading does"
+        advice = (f"repeat the staircase ([sequence] repeats = 2) to tell (a softened rubber's "
+                  f"repeat pulls more than its first rise), or {precondition}, and acquire "
+                  "again")
+    return {"what": "first-cycle softening", "against": "repeats" if repeats else "falling",
             "first_rise_stiffer_pct": float(f"{100 * stiffness:.3g}"),
             "softened_pct": float(f"{softened_pct:.3g}"),
             "largest_gap_N": float(f"{gap_N:.3g}"),
             "chi2_lowered": round(float(lowered), 3),
             "chi2_per_nu": round(float(with_it / fitness.nu), 3),
             "drift_chi2_lowered": round(float(drift_lowered), 3),
-            "said": (f"softening: the first rise pulls less than the repeats at the same "
-                     f"pressures (by up to {gap_N:.2g} N): the rubber softened after its first "
-                     f"loading (the Mullins effect), about {softened_pct:.2g} % (its first rise "
-                     f"{100 * stiffness:.2g} % stiffer); fitting that (linearised) lowers chi2 "
-                     f"by {lowered:.3g} (chi2/nu {with_it / fitness.nu:.3g}), where a zero "
-                     f"drifting with time lowers it by {drift_lowered:.3g}; the intervals hold "
-                     "the preconditioned muscle (the model-form term softening); "
-                     f"{advice}"),
-            "verdict": (f"the first rise pulls less than the repeats: the rubber softened after "
-                        f"its first loading (the Mullins effect, the note above): {advice}"),
+            "said": (f"softening: {seen} (by up to {gap_N:.2g} N): {cause} (the Mullins "
+                     f"effect), about "
+                     f"{softened_pct:.2g} % (its first rise {100 * stiffness:.2g} % stiffer); "
+                     f"fitting that (linearised) lowers chi2 by {lowered:.3g} (chi2/nu "
+                     f"{with_it / fitness.nu:.3g}), where a zero drifting with time lowers it by "
+                     f"{drift_lowered:.3g}; the intervals hold the preconditioned muscle (the "
+                     f"model-form term softening); {advice}"),
+            "verdict": f"{seen}: {cause} (the Mullins effect, the note above): {advice}",
             "ready_if": "with the intervals holding the preconditioned muscle",
             "shift": {n: float(v) for n, v in zip(best.names, step, strict=True)}}
 
