@@ -40,7 +40,9 @@ errors at once:
   for by name): the rubber loses 5-20 % of its stiffness once a pressure has been exceeded
   (the Mullins effect, ``[sim.truth] mullins_fraction``; the truth is the preconditioned
   muscle), the runs not preconditioned: the plan's single staircase, or, with repeats, the
-  staircase twice (``[sequence] repeats = 2``), whose first rise pulls less than its repeat.
+  staircase twice (``[sequence] repeats = 2``), whose first rise pulls less than its repeat;
+  ``repeats without softening`` (by name), the staircase twice on a rubber that does not
+  soften: the control, on which no softening should be named.
 
 The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
 the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
@@ -84,7 +86,7 @@ from mkm.bench.sim_settings import remove_simulator_settings
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubing lag",
               "tubing lag on ramps", "first-cycle softening",
-              "first-cycle softening with repeats")
+              "first-cycle softening with repeats", "repeats without softening")
 #: what ``--departures`` draws by default: the recorded results' set
 DEFAULT_DEPARTURES = DEPARTURES[:3]
 #: the fields of a draw's printed line
@@ -118,6 +120,8 @@ def depart(muscle: dict, departure: str) -> dict:
     elif departure.startswith("first-cycle softening"):
         truth["mullins_fraction"] = float(rng.uniform(0.05, 0.20))
         out["repeats"] = 2 if departure.endswith("repeats") else 1
+    elif departure == "repeats without softening":
+        out["repeats"] = 2
     return out
 
 
@@ -181,9 +185,9 @@ def departure_value(muscle: dict) -> str:
                 f"({100 * (muscle['declared_L0_mm'] / muscle['L0_mm'] - 1):+.2f} %)")
     if muscle["departure"] == "sliding braid":
         return f"sliding, friction {muscle['hysteresis_fraction']:.3f}"
-    if muscle["departure"].startswith("first-cycle softening"):
-        return (f"softening {100 * t['mullins_fraction']:.1f} %, {muscle['repeats']} "
-                f"staircase{'s' if muscle['repeats'] > 1 else ''} per run")
+    if "repeats" in muscle:
+        return (f"softening {100 * t.get('mullins_fraction', 0.0):.1f} %, "
+                f"{muscle['repeats']} staircase{'s' if muscle['repeats'] > 1 else ''} per run")
     if muscle["departure"].startswith("tubing lag"):
         ramp = (f", ramps reaching the top in {muscle['ramp_to_top_s']:.0f} s"
                 if "ramp_to_top_s" in muscle else "")
@@ -214,7 +218,10 @@ def one(muscle: dict, out: Path) -> dict:
              "rubber_scale": equivalent_scale(muscle, simulated)}
     judged(row, result, muscle, truth, seconds,
            verdict_line=result.summary().splitlines()[-1],
-           frame_check=result.goodness.frame_check if result.goodness else None)
+           frame_check=result.goodness.frame_check if result.goodness else None,
+           softening=next(({k: v for k, v in w.items() if k not in ("said", "verdict")}
+                           for w in result.instrument_warnings
+                           if w["what"] == "first-cycle softening"), None))
     return row
 
 
@@ -232,7 +239,8 @@ def summarise(rows: list[dict]) -> list[dict]:
                       "instrument_warning": sum(r["instrument_warning"] is not None
                                                 for r in mine),
                       "frame_check_sweeps": sum((r.get("frame_check") or {}).get("sweeps", 0)
-                                                for r in mine)})
+                                                for r in mine),
+                      "softening_named": sum(r.get("softening") is not None for r in mine)})
     return table
 
 
@@ -247,6 +255,7 @@ def table(rows: list[dict]) -> list[dict]:
              "instrument_warning": "yes" if r["instrument_warning"] else "no",
              "verdict_first": first_said(r.get("verdict_line")),
              "frame_check": frame_check_said(r.get("frame_check")),
+             "softening": softening_said(r.get("softening")),
              "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
 
 
@@ -260,6 +269,14 @@ def frame_check_said(check: dict | None) -> str:
     return f"{check['sweeps']} ({model})"
 
 
+def softening_said(softening: dict | None) -> str:
+    """The first-cycle softening identify named, in % of the rubber's stiffness, and what it
+    compared the first rise with (the repeats, or the falling branch), or '-'."""
+    if not softening:
+        return "-"
+    return f"{softening['softened_pct']:g} % (against the {softening['against']})"
+
+
 def first_said(verdict: str | None) -> str:
     """What a verdict sends the reader to first (the rest length, the braid, the rubber's
     ratio, the declared tolerances, the surrogate's box; within the noise, the other braid or
@@ -269,6 +286,7 @@ def first_said(verdict: str | None) -> str:
         return "-"
     first = verdict.split(marks[0])[1]
     for key, said in (("trails the pressure", "lag"), ("frame yielding", "frame"),
+                      ("first loading", "softening"),
                       ("braid from a creep", "braid, creep or load cell"),
                       ("load cell", "load cell or creep"),
                       ("rest length", "rest length or gap"), ("braid", "braid"),
