@@ -221,6 +221,11 @@ class Sim:
             raise ValueError(f"sim.truth.{refused[0]} is not a parameter of sim.model="
                              f"{self.model!r}: expected some of "
                              f"{', '.join(k for k in declared if k in MODEL_FIELDS) or 'none'}")
+        if self.truth.mullins_fraction and "C10_MPa" not in declared:
+            rubbers = [n for n in static_names() if "C10_MPa" in entry(n).parameters]
+            raise ValueError(f"sim.truth.mullins_fraction softens the rubber, which "
+                             f"sim.model={self.model!r} does not have: expected one of "
+                             f"{', '.join(rubbers)}")
         if self.truth.braid is not None:
             choices = declared["braid"].options()
             if self.truth.braid not in choices:

@@ -496,3 +496,7 @@ def test_a_rubber_that_softens_on_its_first_loading_pulls_less_on_its_first_rise
                                          r"expected 0 to 0.5 \(a fraction of the rubber's "
                                          r"stiffness\)$"):
         config.replace(sim={"truth": {"mullins_fraction": 0.6}})
+    with pytest.raises(ValueError, match=r"^sim.truth.mullins_fraction softens the rubber, "
+                                         r"which sim.model='eq2' does not have: expected one of "
+                                         r".*thickwall"):
+        config.replace(sim={"model": "eq2", "truth": {"mullins_fraction": 0.1}})
