@@ -926,8 +926,10 @@ def first_rise(run) -> tuple[np.ndarray, np.ndarray]:
     first = np.zeros(set_bar.size, dtype=bool)
     first[:end] = end < set_bar.size
     later = set_bar[end:][direction[end:] == "up"]
-    repeated = first & np.isclose(set_bar[:, None], later[None, :], rtol=0.0,
-                                  atol=1e-6).any(axis=1) if later.size else first & False
+    repeated = np.zeros_like(first)
+    if later.size:
+        repeated = first & np.isclose(set_bar[:, None], later[None, :], rtol=0.0,
+                                      atol=1e-6).any(axis=1)
     return first, repeated
 
 
@@ -1007,8 +1009,8 @@ def softening_hint(source, runs, best, fitness) -> dict | None:
             "chi2_per_nu": round(float(with_it / fitness.nu), 3),
             "drift_chi2_lowered": round(float(drift_lowered), 3),
             "said": (f"softening: {seen} (by up to {gap_N:.2g} N): {cause} (the Mullins "
-                     f"effect), about "
-                     f"{softened_pct:.2g} % (its first rise {100 * stiffness:.2g} % stiffer); "
+                     f"effect), about {softened_pct:.2g} % (its first rise "
+                     f"{100 * stiffness:.2g} % stiffer); "
                      f"fitting that (linearised) lowers chi2 by {lowered:.3g} (chi2/nu "
                      f"{with_it / fitness.nu:.3g}), where a zero drifting with time lowers it by "
                      f"{drift_lowered:.3g}; the intervals hold the preconditioned muscle (the "
