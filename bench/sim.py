@@ -35,7 +35,12 @@ sensor). A frame of stiffness ``frame_stiffness_N_per_mm`` lets the muscle short
 under its own pull: the static force is the model's at the length that pull leaves it. Tubing
 between the regulator's outlet (where its sensor and the monitor read) and the muscle lags the
 muscle's pressure behind the outlet's by a first-order lag of ``line_tau_s``: on a ramp the force
-trails the monitored pressure, a loop between the branches that is not friction.
+trails the monitored pressure, a loop between the branches that is not friction. A rubber that
+softens on its first loading (``mullins_fraction``, the Mullins effect) pulls the force of a
+stiffer rubber while its pressure rises above every pressure it has fallen from in the run
+(taking it over within :data:`MULLINS_BAND` of that pressure above it), and the truth's at and
+below them: a staircase's first rise pulls less than its repeats at the same pressure, and from
+its top on the muscle is the preconditioned one.
 
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
@@ -77,6 +82,10 @@ USB6001_RANGE_V = USB6001.ai_range_V
 
 LSB_V = USB6001.ai_lsb_V  # USB-6001: 14 bits over +-10 V = 1.22 mV
 STANDARD_GRAVITY = 9.80665  # m/s^2, for masses hung on the load cell
+#: a rubber softened up to a pressure takes its first loading's stiffness back over this
+#: share of that pressure above it (the fresh and softened curves meet, as in Ogden and
+#: Roxburgh's model): a staircase a few mbar above its preconditioning pulls as preconditioned
+MULLINS_BAND = 0.1
 MANOMETER_RESOLUTION_BAR = 0.05  # smallest division of a 2.5 bar class-1 dial (paper's NUOVA FIMA)
 
 
@@ -88,8 +97,10 @@ def quantize_volts(volts: float) -> float:
     return round(clipped / LSB_V) * LSB_V
 
 
-def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
-    """Pressures [bar] over the regulator's range and the model's static force [N] at them.
+def static_force_table(config, n: int = 81, first_loading: bool = False,
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """Pressures [bar] over the regulator's range and the model's static force [N] at them
+    (``first_loading``: the rubber's before it softened, :func:`first_loading_params`).
 
     Computed once per muscle and model in a process (an FE sweep takes about a second); a
     sample then costs one linear interpolation (``n`` points over full scale, 0.05 bar on a
@@ -102,7 +113,8 @@ def static_force_table(config, n: int = 81) -> tuple[np.ndarray, np.ndarray]:
     m, s, fs = config.muscle, config.sim, config.regulator.full_scale_bar
     mesh = s.fe_mesh if s.model == "axisym" else None
     top = max(fs, highest_pressure_bar(config))
-    return _table(s.model, mesh, m.L0_mm, tuple(sorted(muscle_params(config).items())),
+    params = first_loading_params(config) if first_loading else muscle_params(config)
+    return _table(s.model, mesh, m.L0_mm, tuple(sorted(params.items())),
                   *s.truth.geometry(m), m.eps, top, math.ceil((n - 1) * top / fs) + 1,
                   s.truth.frame_stiffness_N_per_mm)
 
@@ -118,6 +130,18 @@ def muscle_params(config) -> dict[str, float | str]:
     declared = {k: v for k, v in config.muscle.model_parameters().items()
                 if k in MODEL_FIELDS and k in taken}
     return {**declared, **config.sim.truth.model_params()}
+
+
+def first_loading_params(config) -> dict[str, float | str]:
+    """:func:`muscle_params` with the rubber of the muscle before its first loading softened
+    it: ``1 / (1 - mullins_fraction)`` times the truth's C10 and C01 (the model's own where
+    nothing sets them)."""
+    s, m = config.sim, config.muscle
+    params = muscle_params(config)
+    mesh = s.fe_mesh if s.model == "axisym" else None
+    rubber = _model(s.model, mesh, m.L0_mm, params).params()
+    stiffer = 1.0 / (1.0 - s.truth.mullins_fraction)
+    return {**params, **{k: stiffer * float(rubber[k]) for k in ("C10_MPa", "C01_MPa")}}
 
 
 def highest_pressure_bar(config) -> float:
@@ -210,7 +234,7 @@ def describe_physics(config) -> dict:
                   if v != getattr(m, k)]
     departures += [f"{k} {getattr(s.truth, k):g}" for k in (*INSTRUMENT_BOUNDS,
                                                             "frame_stiffness_N_per_mm",
-                                                            "line_tau_s")
+                                                            "line_tau_s", "mullins_fraction")
                    if getattr(s.truth, k) is not None]
     return {
         "force_model": s.model, "force_model_params": model.params(),
@@ -238,6 +262,11 @@ class SimMuscleBench:
         s = config.sim
         self.dt = 1.0 / config.daq.sample_rate_hz
         self.table_p, self.table_F = static_force_table(config)
+        # the rubber before it softened, above the highest pressure the muscle has seen
+        self.first_p, self.first_F = (static_force_table(config, first_loading=True)
+                                      if s.truth.mullins_fraction else (None, None))
+        self.highest_bar = 0.0  # the muscle's highest pressure so far
+        self.softened_bar = 0.0  # the highest it has fallen from: its rubber softened up to it
         self.lag = 1.0 - math.exp(-self.dt / s.regulator_tau_s)
         self.max_step_bar = s.regulator_slew_bar_per_s * self.dt
         self.relax = 1.0 - math.exp(-self.dt / s.creep_tau_s)
@@ -322,6 +351,16 @@ class SimMuscleBench:
         else:
             self.muscle_pressure_bar = self.pressure_bar
         static = float(np.interp(self.muscle_pressure_bar, self.table_p, self.table_F))
+        if self.first_F is not None:
+            if self.muscle_pressure_bar < self.highest_bar:
+                self.softened_bar = self.highest_bar
+            self.highest_bar = max(self.highest_bar, self.muscle_pressure_bar)
+            above_bar = self.muscle_pressure_bar - self.softened_bar
+            if above_bar > 0:  # loading its rubber afresh
+                fresh = float(np.interp(self.muscle_pressure_bar, self.first_p, self.first_F))
+                share = (min(above_bar / (MULLINS_BAND * self.softened_bar), 1.0)
+                         if self.softened_bar > 0 else 1.0)
+                static += share * (fresh - static)
         self.hysteretic_N, self.relaxed_N = advance(
             self.hysteretic_N, self.relaxed_N, static, s.hysteresis_fraction, s.creep_fraction,
             self.relax)

@@ -76,7 +76,13 @@ class Truth:
     never rigid, and the force falls steeply with eps). The tubing: ``line_tau_s``, the time
     constant of the first-order lag between the regulator's outlet, where its sensor and the
     monitor read, and the muscle, which fills through its tubing: on a ramp of ``r`` bar/s the
-    muscle's pressure trails the monitor's by ``r * line_tau_s``.
+    muscle's pressure trails the monitor's by ``r * line_tau_s``. The rubber:
+    ``mullins_fraction``, the share of its stiffness it loses once a pressure has been exceeded
+    (the Mullins effect: a fresh or rested muscle is stiffer on its first rise to a new highest
+    pressure than on every later loading to it): the truth's rubber is the preconditioned
+    one, and above every pressure the muscle has fallen from in the run (on its first rise,
+    above none) it is the one of a rubber ``1 / (1 - mullins_fraction)`` times as stiff; each
+    run starts rested, and nothing recovers within it.
 
     Unset (None): the declared value (``[muscle]``'s angle, rubber and gap where it gives
     them, else the calibrated angle, Silastic S, no gap; a bonded braid, the declared
@@ -102,6 +108,7 @@ class Truth:
     monitor_stuck_bar: float | None = None
     frame_stiffness_N_per_mm: float | None = None
     line_tau_s: float | None = None
+    mullins_fraction: float | None = None
 
     def check(self):
         from mkm.fem.limits import check_theta0, check_value
@@ -119,6 +126,9 @@ class Truth:
                    *FRAME_STIFFNESS_BOUNDS_N_PER_MM, "N/mm")
         if self.line_tau_s is not None:
             within("sim.truth.line_tau_s", self.line_tau_s, *LINE_TAU_BOUNDS_S, "s")
+        if self.mullins_fraction is not None:
+            within("sim.truth.mullins_fraction", self.mullins_fraction, *MULLINS_BOUNDS,
+                   "(a fraction of the rubber's stiffness)")
 
     def model_params(self) -> dict[str, float | str]:
         """The set values the force model takes (angle, rubber, gap, braid)."""
@@ -142,6 +152,9 @@ class Truth:
 FRAME_STIFFNESS_BOUNDS_N_PER_MM = (1.0, 1e7)
 #: a tubing lag the simulator takes [s]: none to a muscle filled through a long thin line
 LINE_TAU_BOUNDS_S = (0.0, 60.0)
+#: a first loading's softening the simulator takes: none to half the rubber's stiffness (filled
+#: rubbers lose up to some 40 % on their first cycle, silicones less)
+MULLINS_BOUNDS = (0.0, 0.5)
 #: the truths the force model takes; the true geometry; the instruments' truths: their bounds
 #: and unit, and the exact instrument's value
 MODEL_FIELDS = ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "braid")
@@ -208,6 +221,11 @@ class Sim:
             raise ValueError(f"sim.truth.{refused[0]} is not a parameter of sim.model="
                              f"{self.model!r}: expected some of "
                              f"{', '.join(k for k in declared if k in MODEL_FIELDS) or 'none'}")
+        if self.truth.mullins_fraction and "C10_MPa" not in declared:
+            rubbers = [n for n in static_names() if "C10_MPa" in entry(n).parameters]
+            raise ValueError(f"sim.truth.mullins_fraction softens the rubber, which "
+                             f"sim.model={self.model!r} does not have: expected one of "
+                             f"{', '.join(rubbers)}")
         if self.truth.braid is not None:
             choices = declared["braid"].options()
             if self.truth.braid not in choices:

@@ -35,7 +35,14 @@ errors at once:
   on ramps, one continuous ramp per eps up to the plan's top pressure and back, reaching it
   in 60-120 s (:func:`mkm.bench.sim.logged_ramp`, as a lab's logger records it), imported
   with the instruments' declared accuracy (the load cell's 0.05 % of its capacity, a 0.25 %
-  class transducer's 0.25 % of the monitor's full scale) so that the fit is judged.
+  class transducer's 0.25 % of the monitor's full scale) so that the fit is judged;
+- ``first-cycle softening`` and ``first-cycle softening with repeats`` (drawn only when asked
+  for by name): the rubber loses 5-20 % of its stiffness once a pressure has been exceeded
+  (the Mullins effect, ``[sim.truth] mullins_fraction``; the truth is the preconditioned
+  muscle), the runs not preconditioned: the plan's single staircase, or, with repeats, the
+  staircase twice (``[sequence] repeats = 2``), whose first rise pulls less than its repeat;
+  ``repeats without softening`` (by name), the staircase twice on a rubber that does not
+  soften: the control, on which no softening should be named.
 
 The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
 the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
@@ -81,7 +88,8 @@ from mkm.bench.sim_settings import remove_simulator_settings
 
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubing lag",
-              "tubing lag on ramps")
+              "tubing lag on ramps", "first-cycle softening",
+              "first-cycle softening with repeats", "repeats without softening")
 #: what ``--departures`` draws by default: the recorded results' set
 DEFAULT_DEPARTURES = DEPARTURES[:3]
 #: the fields of a draw's printed line
@@ -113,6 +121,11 @@ def depart(muscle: dict, departure: str) -> dict:
         truth["line_tau_s"] = float(rng.uniform(0.2, 2.0))
         if departure.endswith("ramps"):
             out["ramp_to_top_s"] = float(rng.uniform(60.0, 120.0))
+    elif departure.startswith("first-cycle softening"):
+        truth["mullins_fraction"] = float(rng.uniform(0.05, 0.20))
+        out["repeats"] = 2 if departure.endswith("repeats") else 1
+    elif departure == "repeats without softening":
+        out["repeats"] = 2
     return out
 
 
@@ -151,6 +164,8 @@ def acquire_blind(muscle: dict, declared: dict, out: Path) -> list[Path]:
     simulated = {**declared, "eps": [true_eps(muscle, e) for e in declared["eps"]]}
     for k, eps in enumerate(declared["eps"]):
         config = config_for(muscle, simulated, simulated["eps"][k], k)
+        if "repeats" in muscle:
+            config = config.replace(sequence={"repeats": muscle["repeats"]})
         if "ramp_to_top_s" in muscle:
             paths.append(ramp_run(muscle, config, out))
             continue
@@ -174,6 +189,9 @@ def departure_value(muscle: dict) -> str:
                 f"({100 * (muscle['declared_L0_mm'] / muscle['L0_mm'] - 1):+.2f} %)")
     if muscle["departure"] == "sliding braid":
         return f"sliding, friction {muscle['hysteresis_fraction']:.3f}"
+    if "repeats" in muscle:
+        return (f"softening {100 * t.get('mullins_fraction', 0.0):.1f} %, "
+                f"{muscle['repeats']} staircase{'s' if muscle['repeats'] > 1 else ''} per run")
     if muscle["departure"].startswith("tubing lag"):
         ramp = (f", ramps reaching the top in {muscle['ramp_to_top_s']:.0f} s"
                 if "ramp_to_top_s" in muscle else "")
@@ -206,6 +224,9 @@ def one(muscle: dict, out: Path) -> dict:
     judged(row, result, muscle, truth, seconds,
            verdict_line=result.summary().splitlines()[-1],
            frame_check=result.goodness.frame_check if result.goodness else None,
+           softening=next(({k: v for k, v in w.items() if k not in ("said", "verdict")}
+                           for w in result.instrument_warnings
+                           if w["what"] == "first-cycle softening"), None),
            **braid_refit(result))
     return row
 
@@ -237,7 +258,8 @@ def summarise(rows: list[dict]) -> list[dict]:
                                                 for r in mine),
                       "braid_refit_sweeps": sum(r.get("braid_refit_sweeps", 0) for r in mine),
                       "braid_refit_seconds": round(sum(r.get("braid_refit_seconds", 0.0)
-                                                       for r in mine), 1)})
+                                                       for r in mine), 1),
+                      "softening_named": sum(r.get("softening") is not None for r in mine)})
     return table
 
 
@@ -254,6 +276,7 @@ def table(rows: list[dict]) -> list[dict]:
              "frame_check": frame_check_said(r.get("frame_check")),
              "braid_refit_sweeps": r.get("braid_refit_sweeps", 0),
              "braid_refit_seconds": r.get("braid_refit_seconds", 0.0),
+             "softening": softening_said(r.get("softening")),
              "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
 
 
@@ -267,6 +290,14 @@ def frame_check_said(check: dict | None) -> str:
     return f"{check['sweeps']} ({model})"
 
 
+def softening_said(softening: dict | None) -> str:
+    """The first-cycle softening identify named, in % of the rubber's stiffness, and what it
+    compared the first rise with (the repeats, or the falling branch), or '-'."""
+    if not softening:
+        return "-"
+    return f"{softening['softened_pct']:g} % (against the {softening['against']})"
+
+
 def first_said(verdict: str | None) -> str:
     """What a verdict sends the reader to first (the rest length, the braid, the rubber's
     ratio, the declared tolerances, the surrogate's box; within the noise, the other braid or
@@ -276,6 +307,7 @@ def first_said(verdict: str | None) -> str:
         return "-"
     first = verdict.split(marks[0])[1]
     for key, said in (("trails the pressure", "lag"), ("frame yielding", "frame"),
+                      ("first loading", "softening"),
                       ("braid from a creep", "braid, creep or load cell"),
                       ("load cell", "load cell or creep"),
                       ("rest length", "rest length or gap"), ("braid", "braid"),

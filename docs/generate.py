@@ -350,6 +350,10 @@ BENCHMARKS = {
     "identify_wrong_range_lag.json": "benchmarks/bench_identify_wrong_range.py --draws 8 "
                                      "--seed 20261601 --departures 'tubing lag,tubing lag on "
                                      "ramps' --out {out}",
+    "identify_wrong_range_softening.json": "benchmarks/bench_identify_wrong_range.py --draws 6 "
+                                           "--seed 20261601 --departures 'first-cycle "
+                                           "softening,first-cycle softening with repeats,"
+                                           "repeats without softening' --out {out}",
     "mesh_bound.json": "benchmarks/bench_mesh_bound.py --muscles 240 --seed 20264102 "
                        "--out {out}",
     # the guide's further checks of the bound, on the draws it names

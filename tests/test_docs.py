@@ -2799,6 +2799,55 @@ def test_the_guides_lag_between_monitor_and_muscle_is_its_measured_file():
     assert (f"The fitted lag is {min(ratio):.2f}-{max(ratio):.2f} times the truth's") in said
 
 
+def test_the_guides_first_cycle_softening_is_its_measured_file():
+    """calibration.md's words on identify's defaults with a rubber that softens on its first
+    loading: held to ``identify_wrong_range_softening.json`` (the verdicts' counts per set of
+    runs, the softening notes and what they compared the first rise with, the fitted softening
+    against the truth's, the control's silence)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_range_softening.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    said = text[text.index("**A rubber that softens on its first loading.**"):]
+    said = said[:said.index("### What the intervals carry")]
+    assert record["command"] == (
+        "benchmarks/bench_identify_wrong_range.py --draws 6 --seed 20261601 --departures "
+        "\"first-cycle softening,first-cycle softening with repeats,repeats without softening\" "
+        "--out docs/measured/identify_wrong_range_softening.json")
+
+    def draws(departure):
+        return [d for d in record["draws"] if d["departure"] == departure]
+
+    for departure, runs, against in (("first-cycle softening", "one staircase per run",
+                                      "falling"),
+                                     ("first-cycle softening with repeats", "two staircases",
+                                      "repeats")):
+        mine = draws(departure)
+        count = {v: sum(d["verdict"] == v for d in mine) for v in ("covered", "warned",
+                                                                     "SILENT")}
+        truth = [100 * d["muscle"]["truth"]["mullins_fraction"] for d in mine]
+        named = [d for d in mine if d["softening"]]
+        assert (f"On {runs} ({len(mine)} draws, softening {min(truth):.0f}-{max(truth):.0f} %), "
+                f"{count['covered']} were covered, {count['warned']} warned and "
+                f"{count['SILENT']} `SILENT`") in said
+        assert all(d["softening"]["against"] == against for d in named)
+        ratio = [d["softening"]["softened_pct"] / (100 * d["muscle"]["truth"]["mullins_fraction"])
+                 for d in named]
+        assert (f"{len(named)} name the softening against the "
+                f"{'falling branch' if against == 'falling' else against}, fitted "
+                f"{min(ratio):.2f}-{max(ratio):.2f} times the truth's") in said
+        assert all(d["verdict_line"].find("first, the first rise pulls less than")
+                   == d["verdict_line"].find("first, ") > 0 for d in named)
+        misfit = [d["chi2_per_nu"] for d in mine if d["misfit_line"]]
+        assert f"{len(misfit)} misfit (chi2/nu {min(misfit):.3g}-{max(misfit):.3g})" in said
+    control = draws("repeats without softening")
+    assert not any(d["softening"] for d in control)
+    chi2 = [d["chi2_per_nu"] for d in control]
+    assert (f"The control's {len(control)} draws (two staircases, a rubber that does not "
+            f"soften) name none (chi2/nu {min(chi2):.3g}-{max(chi2):.3g}") in said
+
+
 def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
     """calibration.md's words on identify's defaults on a bench wrong several ways at once:
     held to ``identify_wrong_range.json`` (the verdicts' counts, the rest lengths' misfits and

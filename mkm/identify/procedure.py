@@ -122,6 +122,22 @@ LAG_MAX_S = 10.0
 #: standard deviations of one parameter's (the loop it leaves is friction's to a fit that has
 #: no lag, so it may lower a chi-square already within the noise)
 LAG_CHI2 = 9.0
+#: the first rise's extra rubber stiffness [fraction] the force's sensitivity to it is
+#: differenced over (:func:`softening_hint`): about a rubber's first-cycle softening (5-20 %)
+SOFTENING_STEP = 0.1
+#: the stiffest first rise searched: a rubber twice as stiff as on its repeats
+SOFTENING_MAX = 1.0
+#: the least first-rise stiffening named [fraction]: a rubber's first-cycle softening is 5-20 %;
+#: under a tenth of that (a preconditioning that stopped a few mbar short of the top step) is
+#: no procedure to change
+SOFTENING_MIN = 0.005
+#: without repeats, a first rise lower than the falling branch is named only where it takes at
+#: least this share of the misfit's chi-square excess away (friction's loop, a monitor's
+#: hysteresis part the branches too)
+SOFTENING_TAKES = 0.5
+#: a first-cycle softening is named where fitting it lowers the chi-square by at least this
+#: (and more than a zero drifting with time does): three standard deviations of one parameter's
+SOFTENING_CHI2 = 9.0
 
 
 def identify(run_dirs, params: str | None = None, model: str = "axisym",
@@ -539,6 +555,12 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         # so does a lag the ramps show: without it the fit takes its loop for friction
         terms = {**terms, "lag": {"kind": "one-sided", "what": f"a lag of {lag['tau_s']:.3g} "
                                   "s fitted (linearised)", "shift": lag.pop("shift")}}
+    if softening := softening_hint(source, runs, best, fitness):
+        # and a first rise stiffer than its repeats: the truth is the preconditioned muscle
+        terms = {**terms, "softening": {
+            "kind": "one-sided", "what": "a first rise of a rubber "
+            f"{softening['first_rise_stiffer_pct']:.3g} % stiffer fitted (linearised)",
+            "shift": softening.pop("shift")}}
     boot = extend(boot, best, terms)
     if "shift" in terms.get("creep", {}):
         notes.append(f"the intervals hold a creep of up to {100 * UNTIMED_CREEP_FRACTION:g} % "
@@ -556,7 +578,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      "were free): the interval is stretched to hold it; read it as approximate")
     notes += [edge_note(name, best, source) for name in best.at_edge]
     notes += terms_at_bounds(runs, best)
-    cautions += [lag] if lag else []
+    cautions += [c for c in (lag, softening) if c]
     notes += [c["said"] for c in cautions]
     offset = best.values.get("pressure_offset_bar")
     if "pressure_offset_bar" in best.names and fitting.at_edge(
@@ -906,6 +928,111 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
             "verdict": (f"the force trails the pressure by about {tau_s:.2g} s, a lag between "
                         f"the monitor and the muscle, not friction (the note above): {advice}"),
             "ready_if": "for the braid angle and rubber (not the friction)",
+            "shift": {n: float(v) for n, v in zip(best.names, step, strict=True)}}
+
+
+def first_rise(run) -> tuple[np.ndarray, np.ndarray]:
+    """Per step of ``run``: whether it is on the run's first rise (its steps up to the first
+    that is not above the one before), where the run goes on past it; and whether a later
+    rising step repeats its set pressure."""
+    direction = run.steps["direction"].to_numpy()
+    set_bar = run.steps["set_pressure_bar"].to_numpy(dtype=float)
+    rising = (direction == "up") & np.r_[True, set_bar[1:] > set_bar[:-1]]
+    end = int(np.argmin(rising)) if not rising.all() else rising.size
+    first = np.zeros(set_bar.size, dtype=bool)
+    first[:end] = end < set_bar.size
+    later = set_bar[end:][direction[end:] == "up"]
+    repeated = np.zeros_like(first)
+    if later.size:
+        repeated = first & np.isclose(set_bar[:, None], later[None, :], rtol=0.0,
+                                      atol=1e-6).any(axis=1)
+    return first, repeated
+
+
+def softening_hint(source, runs, best, fitness) -> dict | None:
+    """Whether the first rise pulls less than the repeats at the same pressures, as a rubber
+    that softens on its first loading does (the Mullins effect: a muscle not preconditioned is
+    stiffer on its first rise to a new highest pressure than on every later one); where no run
+    repeats its staircase, less than the falling branch beyond the fitted friction.
+
+    The first rise's rubber ``1 + a`` times as stiff moves its holds' force by a column from one
+    trace at :data:`SOFTENING_STEP` (the holds of its steps a later rise repeats, where any
+    does, else of all of them; zero elsewhere), fitted with ``a >= 0`` through a linearised
+    refit of the fit's own parameters (:func:`_refitted`); friction and creep, the same on
+    every rise, are the fit's. A zero drifting with time (a column of each hold's time, either
+    sign) also parts the first rise from what follows it. Named (its record, note ``said``,
+    ``verdict`` and the refit's ``shift`` of every fitted parameter, the model-form term
+    ``softening`` of the intervals: the truth is the preconditioned muscle) where the first
+    rise is at least :data:`SOFTENING_MIN` stiffer and that lowers the chi-square by
+    :data:`SOFTENING_CHI2` and more than the drift does; against the falling branch alone
+    (a loop friction makes too), only in a misfit whose excess it takes
+    :data:`SOFTENING_TAKES` of away. Else None."""
+    rises = [first_rise(run) for run in runs]
+    repeats = any(repeated.any() for _, repeated in rises)
+    firsts = [repeated if repeats else first for first, repeated in rises]
+    if not fitness.judged or not any(f.any() for f in firsts):
+        return None
+    if not repeats and not fitness.misfit:
+        return None
+    stiffer = {**best.values, "rubber_scale": best.values["rubber_scale"] * (1 + SOFTENING_STEP)}
+    holds = [run.hold >= 0 for run in runs]
+    column = np.concatenate([
+        np.where(f[np.maximum(run.hold, 0)], m - b, 0.0)[h]
+        for run, f, m, b, h in zip(runs, firsts, fitting.traces(source, runs, stiffer),
+                                   fitting.traces(source, runs, best.values), holds,
+                                   strict=True)])
+    if not np.any(column):
+        return None
+    drift = np.concatenate([(run.time_s - run.time_s[h].mean())[h] / 60.0
+                            for run, h in zip(runs, holds, strict=True)])
+
+    def refit_chi2(amount: float, along=column) -> float:
+        moved = _refitted(best, best.residual_N + amount * along)
+        return goodness.assess(runs, dataclasses.replace(best, residual_N=moved)).chi2
+
+    base = refit_chi2(0.0)
+    stiffness = optimize.minimize_scalar(lambda a: refit_chi2(a / SOFTENING_STEP),
+                                         bounds=(0.0, SOFTENING_MAX), method="bounded",
+                                         options={"xatol": 1e-4}).x
+    with_it = refit_chi2(stiffness / SOFTENING_STEP)
+    # a drift of the zero [N/min], either sign: the chi-square is a parabola in it
+    drift_chi2 = min(base, optimize.minimize_scalar(lambda n: refit_chi2(n, drift)).fun)
+    lowered, drift_lowered = base - with_it, base - drift_chi2
+    if not (stiffness >= SOFTENING_MIN and lowered >= SOFTENING_CHI2
+            and lowered > drift_lowered
+            and (repeats or lowered >= SOFTENING_TAKES * (base - fitness.nu))):
+        return None
+    gap_N = stiffness / SOFTENING_STEP * float(np.max(np.abs(column)))
+    softened_pct = 100 * stiffness / (1 + stiffness)
+    step = _step(best, best.residual_N + stiffness / SOFTENING_STEP * column)
+    precondition = ("precondition the muscle (cycle it to its top pressure 3-5 times before the "
+                    "staircase: [sequence] preconditioning_cycles)")
+    if repeats:
+        seen = "the first rise pulls less than the repeats at the same pressures"
+        cause = "the rubber softened after its first loading"
+        advice = f"{precondition} and acquire again"
+    else:
+        seen = "the first rise pulls less than the falling branch beyond the fitted friction"
+        cause = "as a rubber that softened after its first loading does"
+        advice = (f"repeat the staircase ([sequence] repeats = 2) to tell (a softened rubber's "
+                  f"repeat pulls more than its first rise), or {precondition}, and acquire "
+                  "again")
+    return {"what": "first-cycle softening", "against": "repeats" if repeats else "falling",
+            "first_rise_stiffer_pct": float(f"{100 * stiffness:.3g}"),
+            "softened_pct": float(f"{softened_pct:.3g}"),
+            "largest_gap_N": float(f"{gap_N:.3g}"),
+            "chi2_lowered": round(float(lowered), 3),
+            "chi2_per_nu": round(float(with_it / fitness.nu), 3),
+            "drift_chi2_lowered": round(float(drift_lowered), 3),
+            "said": (f"softening: {seen} (by up to {gap_N:.2g} N): {cause} (the Mullins "
+                     f"effect), about {softened_pct:.2g} % (its first rise "
+                     f"{100 * stiffness:.2g} % stiffer); "
+                     f"fitting that (linearised) lowers chi2 by {lowered:.3g} (chi2/nu "
+                     f"{with_it / fitness.nu:.3g}), where a zero drifting with time lowers it by "
+                     f"{drift_lowered:.3g}; the intervals hold the preconditioned muscle (the "
+                     f"model-form term softening); {advice}"),
+            "verdict": f"{seen}: {cause} (the Mullins effect, the note above): {advice}",
+            "ready_if": "with the intervals holding the preconditioned muscle",
             "shift": {n: float(v) for n, v in zip(best.names, step, strict=True)}}
 
 

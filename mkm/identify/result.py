@@ -599,10 +599,12 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     frame yielding under the muscle's pull before both where it explains the misfit
     (:func:`mkm.identify.procedure.frame_hint`); a lag between the monitor and the muscle
     before all (``cautions``' :func:`mkm.identify.procedure.lag_hint`): a fit with friction for
-    the lag's loop."""
-    lag = [c["verdict"] for c in cautions if c["what"] == "lag between monitor and muscle"]
-    if lag:
-        return f"first, {lag[0]}; then "
+    the lag's loop; so does a first rise stiffer than its repeats
+    (:func:`mkm.identify.procedure.softening_hint`)."""
+    before_all = [c["verdict"] for c in cautions
+                  if c["what"] in ("lag between monitor and muscle", "first-cycle softening")]
+    if before_all:
+        return f"first, {before_all[0]}; then "
     if goodness.frame:
         return (f"first, a frame yielding under the muscle's pull (about "
                 f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above) may be what "

@@ -87,7 +87,8 @@ def test_the_truth_is_recorded_in_the_simulator_settings(config, tmp_path):
                             "monitor_gain": None, "monitor_offset_bar": None,
                             "monitor_bow_bar": None,
                             "monitor_hysteresis_bar": None, "monitor_stuck_bar": None,
-                            "frame_stiffness_N_per_mm": None, "line_tau_s": None}
+                            "frame_stiffness_N_per_mm": None, "line_tau_s": None,
+                            "mullins_fraction": None}
     assert sim["physics"]["instruments"]["monitor_stuck_bar"] is None  # a monitor that reads
     assert sim["physics"]["force_model_params"]["theta0_deg"] == 31.5
     assert "[sim.truth]\ntheta0_deg = 31.5" in (result.path / "config.toml").read_text("utf-8")
@@ -453,3 +454,49 @@ def test_tubing_lags_the_muscle_behind_the_monitored_pressure_on_a_ramp(config):
     with pytest.raises(ValueError, match=r"^sim.truth.line_tau_s=-0.5 is invalid: "
                                          r"expected 0 to 60 s$"):
         config.replace(sim={"truth": {"line_tau_s": -0.5}})
+
+
+def test_a_rubber_that_softens_on_its_first_loading_pulls_less_on_its_first_rise(config):
+    """Mullins effect of 15 %: above the highest pressure so far the muscle's rubber is 1 /
+    0.85 times the truth's, so on its first rise it pulls the thick-wall force of that stiffer
+    rubber (less: the wall resists the braid), some 14 N below the truth's at eps 0.1; back
+    below that pressure, and on the repeat's rise to it, it pulls the truth's (the
+    preconditioned muscle), within the table's interpolation and one ADC step (0.35 N). Above
+    the highest pressure it fell from it takes the stiffer rubber back within a tenth of that
+    pressure: half way at 2.1 bar after 2 bar, wholly at 2.3."""
+    c = quiet(config.replace(muscle={"eps": 0.1}), model="thickwall",
+              truth={"mullins_fraction": 0.15})
+    m = c.muscle
+
+    def thickwall(P, stiffer=1.0):
+        model = make_model("thickwall", L0_mm=m.L0_mm, C10_MPa=stiffer * SILASTIC_S.C10_MPa,
+                           C01_MPa=stiffer * SILASTIC_S.C01_MPa)
+        return float(model.predict(P, m.D0_mm, m.t0_mm, m.eps).force_N)
+
+    bench = SimMuscleBench(c)
+
+    def hold(pressure_bar):
+        bench.set_command_volts(c.regulator.command_volts(pressure_bar))
+        for _ in range(100):  # 10 s: settled to 1e-10 bar
+            cell_V, _ = bench.step()
+        return cell_V * c.loadcell.sensitivity_N_per_V
+
+    first = [hold(1.0), hold(2.0)]
+    later = [hold(1.0), hold(0.0), hold(1.0), hold(2.0)]
+    np.testing.assert_allclose(first, [thickwall(1.0, 1 / 0.85), thickwall(2.0, 1 / 0.85)],
+                               atol=0.35)
+    np.testing.assert_allclose(later, [thickwall(1.0), 0.0, thickwall(1.0), thickwall(2.0)],
+                               atol=0.35)
+    assert thickwall(1.0) - first[0] > 10.0
+    beyond = [hold(2.1), hold(2.3)]
+    np.testing.assert_allclose(beyond, [(thickwall(2.1) + thickwall(2.1, 1 / 0.85)) / 2,
+                                        thickwall(2.3, 1 / 0.85)], atol=0.35)
+    assert "mullins_fraction 0.15" in describe_physics(c)["summary"]
+    with pytest.raises(ValueError, match=r"^sim.truth.mullins_fraction=0.6 is invalid: "
+                                         r"expected 0 to 0.5 \(a fraction of the rubber's "
+                                         r"stiffness\)$"):
+        config.replace(sim={"truth": {"mullins_fraction": 0.6}})
+    with pytest.raises(ValueError, match=r"^sim.truth.mullins_fraction softens the rubber, "
+                                         r"which sim.model='eq2' does not have: expected one of "
+                                         r".*thickwall"):
+        config.replace(sim={"model": "eq2", "truth": {"mullins_fraction": 0.1}})
