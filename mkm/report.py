@@ -1000,7 +1000,16 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
                        muscle_runs, fit, command_below, _advises_rest_length(r),
                        [row["model"] for row in r.summary]),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
-                   _shows_dynamics(r))
+                   _shows_dynamics(r), _ended(r))
+
+
+def _ended(r: _Run) -> str:
+    """How the run ended, as its verdict says it where no step was kept: the terminal shows the
+    verdict alone, without the report's status column."""
+    from mkm.bench.storage import reason_shown
+
+    reason = reason_shown(str(r.run.reason or ""))
+    return f"{r.run.status}: {reason}" if reason else str(r.run.status)
 
 
 def _fe_err(r: _Run, names: dict) -> tuple[str, float] | None:
