@@ -59,7 +59,34 @@ class _Parser(argparse.ArgumentParser):
 
     def error(self, message):  # one line, no usage dump
         self.exit(2, error_line(self.prog, message + self._commands_expected(message)
-                                + _did_you_mean(message)) + "\n")
+                                + self._runs_expected(message) + _did_you_mean(message)) + "\n")
+
+    def _runs_expected(self, message: str) -> str:
+        """For a command typed without its run folders (``mkm report``): what they are, and
+        the runs mkm's own folders here hold (``mkm acquire``'s, ``mkm demo``'s), as a line to
+        type: argparse names only the metavar."""
+        missing = message.partition("the following arguments are required: ")[2].split(", ")
+        action = next((a for a in self._actions if not a.option_strings
+                       and (a.metavar or a.dest) in missing
+                       and (a.metavar == "RUN_DIR" or a.dest == "run")), None)
+        if action is None:
+            return ""
+        from mkm.bench.folders import runs_inside
+        from mkm.paths import default_out
+
+        several = action.nargs == "+"
+        said = (': expected run folders, as `mkm acquire` or `mkm import` prints them last, a '
+                'folder of them or a pattern ("runs/*")' if several else
+                ": expected a run folder, as `mkm acquire` or `mkm import` prints it last")
+        if len(missing) > 1:  # `mkm reprocess` without its --config either: no line to type
+            return said
+        for folder in (default_out("runs"), default_out("demo", "runs")):
+            runs = runs_inside(folder) if folder.is_dir() else []
+            if runs:
+                named = folder if several else runs[-1]
+                return (f"{said}; {folder} holds {len(runs)}: `{self.prog} {named}`"
+                        f"{'' if several else ' (the newest)'}")
+        return f"{said}; none is in {default_out('runs')}: `mkm demo` records two"
 
     def _commands_expected(self, message: str) -> str:
         """For a group typed without its command (``mkm data``): the commands it takes, from

@@ -1404,6 +1404,40 @@ def test_a_group_typed_without_its_command_names_its_commands(group, expected, m
     assert err == f"mkm {group}: error: the following arguments are required: {expected}\n"
 
 
+def test_a_command_typed_without_its_run_folders_says_what_they_are_and_which_are_here(
+        tmp_path, monkeypatch, mkm_run):
+    # `mkm report` alone said 'the following arguments are required: RUN_DIR', naming neither
+    # what a RUN_DIR is nor the runs `mkm acquire` had written beside the newcomer
+    import shutil
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("MKM_OUT", raising=False)
+    expected = ("RUN_DIR: expected run folders, as `mkm acquire` or `mkm import` prints them "
+                'last, a folder of them or a pattern ("runs/*")')
+    code, out, err = mkm_run(["report"])
+    assert code == 2 and out == ""
+    assert err == (f"mkm report: error: the following arguments are required: {expected}; none "
+                   f"is in {Path('mkm-out', 'runs')}: `mkm demo` records two\n")
+    runs = Path(__file__).parents[2] / "data" / "experimental"
+    for run in sorted(runs.glob("2026*")):
+        shutil.copytree(run, Path("mkm-out", "demo", "runs", run.name))
+    code, out, err = mkm_run(["identify"])
+    assert code == 2 and err == (
+        f"mkm identify: error: the following arguments are required: {expected}; "
+        f"{Path('mkm-out', 'demo', 'runs')} holds 2: `mkm identify "
+        f"{Path('mkm-out', 'demo', 'runs')}`\n")
+    code, out, err = mkm_run(["export"])  # one run: the newest, named
+    assert code == 2 and err == (
+        "mkm export: error: the following arguments are required: run: expected a run folder, as "
+        f"`mkm acquire` or `mkm import` prints it last; {Path('mkm-out', 'demo', 'runs')} holds "
+        f"2: `mkm export {Path('mkm-out', 'demo', 'runs', '20261123T084037Z_paper-prototype')}` "
+        "(the newest)\n")
+    code, out, err = mkm_run(["reprocess"])  # its --config missing too: no line to type
+    assert code == 2 and err == (
+        "mkm reprocess: error: the following arguments are required: RUN_DIR, --config: expected "
+        "a run folder, as `mkm acquire` or `mkm import` prints it last\n")
+
+
 @pytest.mark.parametrize("argv, suggested", [
     (["idenitfy"], "identify"), (["fem", "solv"], "solve"), (["reprot"], "report"),
     (["zzz"], None),
