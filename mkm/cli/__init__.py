@@ -53,13 +53,47 @@ class _Parser(argparse.ArgumentParser):
         self._negative_number_matcher = re.compile(r"^-\.?\d")
 
     def parse_known_args(self, args=None, namespace=None):
+        # the words this parser was given, for its error's hint (a subcommand's parser is
+        # given its own words by argparse, through this method)
+        self.typed = list(sys.argv[1:] if args is None else args)
         namespace, rest = super().parse_known_args(args, namespace)
+        if rest and not getattr(namespace, "_mkm_split_list", None):  # the innermost's words
+            first = next((k for k in reversed(range(len(self.typed)))
+                          if self.typed[k:k + len(rest)] == rest), len(self.typed))
+            namespace._mkm_split_list = self._list_split(first)
         remember_command(namespace, self.prog)
         return namespace, rest
 
     def error(self, message):  # one line, no usage dump
+        option = re.match(r"(?:argument )?(--[\w-]+)", message)
+        typed = getattr(self, "typed", [])
+        # an option's bad value followed by words the command takes no positional for
+        split = (self._list_split(typed.index(option[1]) + 2)
+                 if option and option[1] in typed
+                 and all(a.option_strings for a in self._actions) else "")
         self.exit(2, error_line(self.prog, message + self._commands_expected(message)
-                                + self._runs_expected(message) + _did_you_mean(message)) + "\n")
+                                + self._runs_expected(message) + _did_you_mean(message))
+                  + split + "\n")
+
+    def _list_split(self, at: int) -> str:
+        """Where the words typed from ``at`` on follow the value of an option that takes a
+        comma list (``--masses 0 5 10``): that list as one quoted word. PowerShell passes an
+        unquoted comma list (``0,5,10``) to a program as separate words, which argparse then
+        refuses as arguments nobody takes (or takes the first alone)."""
+        typed = getattr(self, "typed", [])
+        words = []
+        for word in typed[at:]:
+            if word.startswith("-") and not self._negative_number_matcher.match(word):
+                break
+            words.append(word)
+        action = self._option_string_actions.get(typed[at - 2]) if 2 <= at <= len(typed) \
+            else None
+        if not words or action is None or typed[at - 1].startswith("-") or not (
+                "," in str(action.metavar or "") or "comma" in str(action.help or "")):
+            return ""
+        listed = ",".join([typed[at - 1], *words])
+        return (f"; a comma list is one word: {typed[at - 2]} \"{listed}\" (PowerShell passes "
+                "an unquoted one as separate words: quote it)")
 
     def _runs_expected(self, message: str) -> str:
         """For a command typed without its run folders (``mkm report``): what they are, and
@@ -195,7 +229,8 @@ def main(argv: list[str] | None = None) -> int:
     if rest:  # named by the command they were given to, not by mkm alone
         name = command_name(args)
         parser.exit(2, error_line(name, f"unrecognized arguments: {' '.join(rest)}: expected "
-                                  f"the arguments of `{name} --help`") + "\n")
+                                  f"the arguments of `{name} --help`")
+                    + getattr(args, "_mkm_split_list", "") + "\n")
     try:
         _check_written_names(args)  # every command that writes: one check of the names
         with warnings.catch_warnings():
