@@ -989,7 +989,8 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     suggests takes every run of ``runs`` of the same muscle (one eps alone confounds the braid
     angle and the rubber); ``command_below``: it refers to that command, said once below the
     verdicts (:func:`_advice_lines`)."""
-    label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
+    label = (f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
+             + _cut_short(r))
     choice, same = _auto_pick(r, names, tolerance)
     path, identified, muscle_runs = _advice_arguments(r, runs)
     record = _identified_record(r.calibration)
@@ -1001,6 +1002,16 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
                        [row["model"] for row in r.summary]),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
                    _shows_dynamics(r), _ended(r))
+
+
+def _cut_short(r: _Run) -> str:
+    """For a run stopped part way, what its verdict is of, said in its label: a model "within
+    2 %" over its two lowest steps is no verdict on the muscle's range."""
+    kept, planned = len(r.run.steps), r.meta.n_steps
+    if r.run.complete or planned is None or not 0 < kept < planned:
+        return ""
+    top = float(r.run.steps["set_pressure_bar"].max())
+    return f", on the {kept} of its {planned} planned steps it kept (to {top:.2f} bar; {_ended(r)})"
 
 
 def _ended(r: _Run) -> str:

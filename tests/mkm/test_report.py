@@ -171,6 +171,20 @@ def test_a_run_that_kept_no_step_says_how_it_ended_on_the_first_screen(tmp_path)
     assert reason_shown(run.reason).startswith("force interlock")
 
 
+def test_a_run_stopped_part_way_says_in_its_verdict_which_steps_it_is_of(runs, report):
+    """The interlock's run kept its lowest steps: its verdict said 'use Thick-wall, the
+    cheapest model within ...' as a complete run's does, a newcomer's answer for the muscle
+    from its first screen over the lowest pressures alone."""
+    _, html = report
+    kept = pd.read_csv(runs[1] / "steps.csv")
+    meta = json.loads((runs[1] / "run.json").read_text(encoding="utf-8"))
+    verdicts = [unescape(v) for v in re.findall(r'<p class="verdict">(Run \d.*?)</p>', html)]
+    assert verdicts[1].startswith(
+        f"Run 2 (eps 0.0 %, simulated), on the {len(kept)} of its 9 planned steps it kept (to "
+        f"{kept['set_pressure_bar'].max():.2f} bar; aborted: {reason_shown(meta['reason'])}): ")
+    assert verdicts[0].startswith("Run 1 (eps 12.2 %, simulated): ")  # complete: as it was
+
+
 def test_a_reason_of_any_length_is_shown_bounded(runs, tmp_path):
     """A run.json reason written by hand or another tool (a pasted log of 100 000 characters):
     the report shows its first line, cut, and says where the whole is; run.json keeps it."""
