@@ -117,7 +117,8 @@ class _Parser(argparse.ArgumentParser):
         for folder in (default_out("runs"), default_out("demo", "runs")):
             runs = runs_inside(folder) if folder.is_dir() else []
             if runs:
-                named = folder if several else runs[-1]
+                named = str(folder if several else runs[-1])
+                named = f'"{named}"' if " " in named else named  # as every shell takes it
                 return (f"{said}; {folder} holds {len(runs)}: `{self.prog} {named}`"
                         f"{'' if several else ' (the newest)'}")
         return f"{said}; none is in {default_out('runs')}: `mkm demo` records two"

@@ -1432,6 +1432,13 @@ def test_a_command_typed_without_its_run_folders_says_what_they_are_and_which_ar
         f"`mkm acquire` or `mkm import` prints it last; {Path('mkm-out', 'demo', 'runs')} holds "
         f"2: `mkm export {Path('mkm-out', 'demo', 'runs', '20261123T084037Z_paper-prototype')}` "
         "(the newest)\n")
+    # MKM_OUT in a folder with a space (C:\\Users\\Lab User\\mkm-out): the line quotes it
+    shutil.copytree(Path("mkm-out", "demo", "runs"), Path("Lab User", "runs"))
+    monkeypatch.setenv("MKM_OUT", "Lab User")
+    code, out, err = mkm_run(["report"])
+    assert code == 2 and err.endswith(
+        f"; {Path('Lab User', 'runs')} holds 2: `mkm report \"{Path('Lab User', 'runs')}\"`\n")
+    monkeypatch.delenv("MKM_OUT")
     code, out, err = mkm_run(["reprocess"])  # its --config missing too: no line to type
     assert code == 2 and err == (
         "mkm reprocess: error: the following arguments are required: RUN_DIR, --config: expected "
