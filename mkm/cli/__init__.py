@@ -60,7 +60,7 @@ class _Parser(argparse.ArgumentParser):
         if rest and not getattr(namespace, "_mkm_split_list", None):  # the innermost's words
             first = next((k for k in reversed(range(len(self.typed)))
                           if self.typed[k:k + len(rest)] == rest), len(self.typed))
-            namespace._mkm_split_list = self._list_split(first)
+            namespace._mkm_split_list = self._list_split(first, alike=True)
         remember_command(namespace, self.prog)
         return namespace, rest
 
@@ -75,11 +75,13 @@ class _Parser(argparse.ArgumentParser):
                                 + self._runs_expected(message) + _did_you_mean(message))
                   + split + "\n")
 
-    def _list_split(self, at: int) -> str:
+    def _list_split(self, at: int, alike: bool = False) -> str:
         """Where the words typed from ``at`` on follow the value of an option that takes a
         comma list (``--masses 0 5 10``): that list as one quoted word. PowerShell passes an
         unquoted comma list (``0,5,10``) to a program as separate words, which argparse then
-        refuses as arguments nobody takes (or takes the first alone)."""
+        refuses as arguments nobody takes (or takes the first alone). ``alike``: only where
+        each word is of the value's kind, a number's or a name's (``--eps 0 extra`` is a stray
+        word, not a list)."""
         typed = getattr(self, "typed", [])
         words = []
         for word in typed[at:]:
@@ -90,6 +92,10 @@ class _Parser(argparse.ArgumentParser):
             else None
         if not words or action is None or typed[at - 1].startswith("-") or not (
                 "," in str(action.metavar or "") or "comma" in str(action.help or "")):
+            return ""
+        numeric = re.compile(r"[+-]?\.?\d")
+        if alike and any(bool(numeric.match(w)) != bool(numeric.match(typed[at - 1]))
+                         for w in words):
             return ""
         listed = ",".join([typed[at - 1], *words])
         return (f"; a comma list is one word: {typed[at - 2]} \"{listed}\" (PowerShell passes "
