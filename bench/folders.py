@@ -36,7 +36,7 @@ def run_order(path: Path) -> tuple:
     return (found["stem"], int(found["k"] or 1), found["tail"], str(path))
 
 
-def _children(folder: Path) -> list[Path]:
+def runs_inside(folder: Path) -> list[Path]:
     """The run folders directly inside ``folder``, oldest first (:func:`run_order`)."""
     return sorted((p for p in folder.iterdir() if p.is_dir() and is_run_folder(p)),
                   key=run_order)
@@ -64,7 +64,7 @@ def run_folders(arguments) -> list[Path]:
                 if is_run_folder(match):
                     found.append(match)
                 elif match.is_dir():
-                    found += _children(match)
+                    found += runs_inside(match)
             if not found:
                 raise ValueError(f"{argument} matches no run folder ({len(matches)} match(es) "
                                  f"without {RUN_RECORD}): expected run folders of mkm acquire "
@@ -73,7 +73,7 @@ def run_folders(arguments) -> list[Path]:
             continue
         path = Path(argument)
         if path.is_dir() and not is_run_folder(path):
-            inside = _children(path)
+            inside = runs_inside(path)
             if not inside:
                 raise ValueError(f"{path} is not a run folder ({RUN_RECORD} is missing) and "
                                  "holds none: expected a run folder or a folder of them")

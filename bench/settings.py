@@ -57,6 +57,47 @@ def separator_hint(argument: str) -> str:
     return f"; on this system folders are separated by /: {posix!r}?"
 
 
+def saved_as_hint(path: Path) -> str:
+    """Where Windows put the file ``path`` names, when it names none: Notepad saves
+    ``bench.toml`` as ``bench.toml.txt`` unless its type is "All files", and Explorer hides the
+    extension, so that file shows as ``bench.toml`` and a name typed from it lacks ``.toml``."""
+    for other, why in ((path.with_name(path.name + ".txt"),
+                        "Notepad added .txt: rename it, or save with type 'All files'"),
+                       (path.with_name(path.name + ".toml"),
+                        "Explorer hides the extension: type it too")):
+        if path.suffix != other.suffix and other.is_file():
+            return f"; {other} is there ({why})"
+    return ""
+
+
+def toml_hint(text: str, exc: tomllib.TOMLDecodeError) -> str:
+    """What the line tomllib refused needs, where its message names the parser's complaint
+    only: a Windows path in a "..." string (each backslash begins an escape), a decimal comma,
+    a word without quotes, Python's ``True``. ``""`` when none of them is the cause."""
+    message = str(exc)
+    at = re.search(r"\(at line (\d+), column \d+\)$", message)
+    lines = text.splitlines()
+    if at is None or int(at[1]) > len(lines):
+        return ""
+    line = lines[int(at[1]) - 1]
+    key, _, value = (part.strip() for part in line.partition("="))
+    value = value.split("#")[0].strip()
+    if message.startswith(("Unescaped '\\'", "Invalid hex value", "Escaped character")):
+        typed = next((m[1] for m in re.finditer(r'"((?:[^"\\]|\\.)*)"', line)
+                      if "\\" in m[1]), None)
+        if typed is not None:
+            fixed = f"'{typed}'" if "'" not in typed else f'"{typed.replace(chr(92), "/")}"'
+            return (f"; a \\ in \"...\" begins an escape (\\n, \\t, \\U...): write a Windows "
+                    f"path in single quotes, {key} = {fixed}, or with / for \\")
+    if message.startswith("Expected newline") and re.fullmatch(r"[+-]?\d+,\d+", value):
+        return f"; a decimal comma: TOML numbers take a point, {key} = {value.replace(',', '.')}"
+    if message.startswith("Invalid value") and re.fullmatch(r"[A-Za-z_][\w.+-]*", value):
+        if value.lower() in ("true", "false"):
+            return f"; TOML's true and false are lower case: {key} = {value.lower()}"
+        return f'; a text value goes in quotes: {key} = "{value}"'
+    return ""
+
+
 def read_toml(text: str, source: str) -> dict[str, Any]:
     """The tables of the TOML ``text`` read from ``source``, or one-line ``ValueError``."""
     if len(text) > MAX_TEXT_CHARS:
@@ -65,7 +106,7 @@ def read_toml(text: str, source: str) -> dict[str, Any]:
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{source} is not valid TOML: {exc}") from None
+        raise ValueError(f"{source} is not valid TOML: {exc}{toml_hint(text, exc)}") from None
     except RecursionError:
         raise ValueError(f"{source} is not valid TOML: nested too deeply") from None
 
@@ -80,7 +121,7 @@ def read_toml_file(path: str | Path, what: str = "") -> tuple[str, dict[str, Any
             raise ValueError(f"{what}{shown} is a folder: expected a TOML file")
         if not path.is_file():
             raise ValueError(f"{what}{shown} does not exist: expected a TOML file"
-                             f"{separator_hint(str(path))}")
+                             f"{separator_hint(str(path)) or saved_as_hint(path)}")
         if path.stat().st_size > MAX_TEXT_CHARS * 4:
             raise ValueError(f"{what}{shown} is {path.stat().st_size} bytes: expected a TOML "
                              f"file of at most {MAX_TEXT_CHARS} characters")

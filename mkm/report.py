@@ -989,7 +989,8 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     suggests takes every run of ``runs`` of the same muscle (one eps alone confounds the braid
     angle and the rubber); ``command_below``: it refers to that command, said once below the
     verdicts (:func:`_advice_lines`)."""
-    label = f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
+    label = (f"Run {r.k} (eps {r.eps_pct:.1f} %{', simulated' if _simulated(r) else ''})"
+             + _cut_short(r))
     choice, same = _auto_pick(r, names, tolerance)
     path, identified, muscle_runs = _advice_arguments(r, runs)
     record = _identified_record(r.calibration)
@@ -1000,7 +1001,26 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
                        muscle_runs, fit, command_below, _advises_rest_length(r),
                        [row["model"] for row in r.summary]),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
-                   _shows_dynamics(r))
+                   _shows_dynamics(r), _ended(r))
+
+
+def _cut_short(r: _Run) -> str:
+    """For a run stopped part way, what its verdict is of, said in its label: a model "within
+    2 %" over its two lowest steps is no verdict on the muscle's range."""
+    kept, planned = len(r.run.steps), r.meta.n_steps
+    if r.run.complete or planned is None or not 0 < kept < planned:
+        return ""
+    top = float(r.run.steps["set_pressure_bar"].max())
+    return f", on the {kept} of its {planned} planned steps it kept (to {top:.2f} bar; {_ended(r)})"
+
+
+def _ended(r: _Run) -> str:
+    """How the run ended, as its verdict says it where no step was kept: the terminal shows the
+    verdict alone, without the report's status column."""
+    from mkm.bench.storage import reason_shown
+
+    reason = reason_shown(str(r.run.reason or ""))
+    return f"{r.run.status}: {reason}" if reason else str(r.run.status)
 
 
 def _fe_err(r: _Run, names: dict) -> tuple[str, float] | None:

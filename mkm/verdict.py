@@ -255,7 +255,7 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
             tolerance: float | None, auto: AutoPick | None = None,
             auto_same: bool = False, fe_err: tuple[str, float] | None = None,
             advice: str | None = None, no_budget: str = NO_BUDGET,
-            dynamics: bool = True) -> str:
+            dynamics: bool = True, ended: str = "") -> str:
     """The verdict sentence of one run (plain text).
 
     ``summary``: one :func:`mkm.scoring.summarise_run` row per model (``model`` is the spec
@@ -266,14 +266,15 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
     what that distance, beyond auto's bound, tells (:func:`muscle_advice`); ``no_budget``: why
     the run has no E_n, if it has none; ``dynamics``: whether the run can show braid friction or
     creep (a bench run's holds, a table's rising and falling branches), which the static models
-    lack.
+    lack; ``ended``: how the run ended, its status and reason, said where it left no step.
     """
     row, within = recommend(summary, tolerance)
     if not any(r.get("points", 0) > 0 for r in summary):
         # a run stopped before its first step was recorded (Ctrl-C, SIGTERM, an interlock): no
         # model failed, there was nothing to score
         return (f"{run_label}: no step was kept, so no model can be scored: the run ended "
-                "before its first step was recorded (its status and signals below say why).")
+                "before its first step was recorded "
+                f"({ended or 'its status and signals below say why'}).")
     if row is None and any(r["valid_points"] > 0 for r in summary):
         # valid forces without an error: Equation 7 divides by the largest measured force
         return (f"{run_label}: no model can be scored: the run's largest measured force is "

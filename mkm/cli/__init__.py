@@ -53,13 +53,81 @@ class _Parser(argparse.ArgumentParser):
         self._negative_number_matcher = re.compile(r"^-\.?\d")
 
     def parse_known_args(self, args=None, namespace=None):
+        # the words this parser was given, for its error's hint (a subcommand's parser is
+        # given its own words by argparse, through this method)
+        self.typed = list(sys.argv[1:] if args is None else args)
         namespace, rest = super().parse_known_args(args, namespace)
+        if rest and not getattr(namespace, "_mkm_split_list", None):  # the innermost's words
+            first = next((k for k in reversed(range(len(self.typed)))
+                          if self.typed[k:k + len(rest)] == rest), len(self.typed))
+            namespace._mkm_split_list = self._list_split(first, alike=True)
         remember_command(namespace, self.prog)
         return namespace, rest
 
     def error(self, message):  # one line, no usage dump
+        option = re.match(r"(?:argument )?(--[\w-]+)", message)
+        typed = getattr(self, "typed", [])
+        # an option's bad value followed by words the command takes no positional for
+        split = (self._list_split(typed.index(option[1]) + 2)
+                 if option and option[1] in typed
+                 and all(a.option_strings for a in self._actions) else "")
         self.exit(2, error_line(self.prog, message + self._commands_expected(message)
-                                + _did_you_mean(message)) + "\n")
+                                + self._runs_expected(message) + _did_you_mean(message))
+                  + split + "\n")
+
+    def _list_split(self, at: int, alike: bool = False) -> str:
+        """Where the words typed from ``at`` on follow the value of an option that takes a
+        comma list (``--masses 0 5 10``): that list as one quoted word. PowerShell passes an
+        unquoted comma list (``0,5,10``) to a program as separate words, which argparse then
+        refuses as arguments nobody takes (or takes the first alone). ``alike``: only where
+        each word is of the value's kind, a number's or a name's (``--eps 0 extra`` is a stray
+        word, not a list)."""
+        typed = getattr(self, "typed", [])
+        words = []
+        for word in typed[at:]:
+            if word.startswith("-") and not self._negative_number_matcher.match(word):
+                break
+            words.append(word)
+        action = self._option_string_actions.get(typed[at - 2]) if 2 <= at <= len(typed) \
+            else None
+        if not words or action is None or typed[at - 1].startswith("-") or not (
+                "," in str(action.metavar or "") or "comma" in str(action.help or "")):
+            return ""
+        numeric = re.compile(r"[+-]?\.?\d")
+        if alike and any(bool(numeric.match(w)) != bool(numeric.match(typed[at - 1]))
+                         for w in words):
+            return ""
+        listed = ",".join([typed[at - 1], *words])
+        return (f"; a comma list is one word: {typed[at - 2]} \"{listed}\" (PowerShell passes "
+                "an unquoted one as separate words: quote it)")
+
+    def _runs_expected(self, message: str) -> str:
+        """For a command typed without its run folders (``mkm report``): what they are, and
+        the runs mkm's own folders here hold (``mkm acquire``'s, ``mkm demo``'s), as a line to
+        type: argparse names only the metavar."""
+        missing = message.partition("the following arguments are required: ")[2].split(", ")
+        action = next((a for a in self._actions if not a.option_strings
+                       and (a.metavar or a.dest) in missing
+                       and (a.metavar == "RUN_DIR" or a.dest == "run")), None)
+        if action is None:
+            return ""
+        from mkm.bench.folders import runs_inside
+        from mkm.paths import default_out
+
+        several = action.nargs == "+"
+        said = (': expected run folders, as `mkm acquire` or `mkm import` prints them last, a '
+                'folder of them or a pattern ("runs/*")' if several else
+                ": expected a run folder, as `mkm acquire` or `mkm import` prints it last")
+        if len(missing) > 1:  # `mkm reprocess` without its --config either: no line to type
+            return said
+        for folder in (default_out("runs"), default_out("demo", "runs")):
+            runs = runs_inside(folder) if folder.is_dir() else []
+            if runs:
+                named = str(folder if several else runs[-1])
+                named = f'"{named}"' if " " in named else named  # as every shell takes it
+                return (f"{said}; {folder} holds {len(runs)}: `{self.prog} {named}`"
+                        f"{'' if several else ' (the newest)'}")
+        return f"{said}; none is in {default_out('runs')}: `mkm demo` records two"
 
     def _commands_expected(self, message: str) -> str:
         """For a group typed without its command (``mkm data``): the commands it takes, from
@@ -168,7 +236,8 @@ def main(argv: list[str] | None = None) -> int:
     if rest:  # named by the command they were given to, not by mkm alone
         name = command_name(args)
         parser.exit(2, error_line(name, f"unrecognized arguments: {' '.join(rest)}: expected "
-                                  f"the arguments of `{name} --help`") + "\n")
+                                  f"the arguments of `{name} --help`")
+                    + getattr(args, "_mkm_split_list", "") + "\n")
     try:
         _check_written_names(args)  # every command that writes: one check of the names
         with warnings.catch_warnings():

@@ -371,9 +371,14 @@ def _calibrate(args) -> int:
 
 
 def _dataset(args) -> int:
-    from mkm.fem.dataset import build_dataset
+    from mkm.bench.settings import read_toml_file
+    from mkm.fem.dataset import build_dataset, parse_grid
 
-    run = build_dataset(args.grid, args.model, mesh=args.mesh, out=args.out,
+    # a grid file read as the bench's configurations are: saved by Notepad as "Unicode", its
+    # bad line said with what a Windows user's typing needs
+    grid = (args.grid if args.grid == "paper"
+            else parse_grid(read_toml_file(args.grid, "grid ")[0], args.grid))
+    run = build_dataset(grid, args.model, mesh=args.mesh, out=args.out,
                         workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache,
                         progress=not args.no_progress, calibration=args.calibration)
     print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)

@@ -7,7 +7,7 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
-from mkm.bench.settings import saved_text
+from mkm.bench.settings import saved_as_hint, saved_text, toml_hint
 from mkm.core.ranges import parse_fraction, parse_number
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.limits import check_value
@@ -274,11 +274,15 @@ def load_spec(path) -> dict:
     """
     path = Path(path)
     try:
-        table = tomllib.loads(saved_text(path.read_bytes()))  # a Windows editor's
+        text = saved_text(path.read_bytes())  # a Windows editor's
+        table = tomllib.loads(text)
     except FileNotFoundError:
-        raise ValueError(f"--spec {path}: no such file") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise ValueError(f"--spec {path}: no such file{saved_as_hint(path)}") from None
+    except UnicodeDecodeError as exc:
         raise ValueError(f"--spec {path} is not valid TOML (UTF-8): {exc}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"--spec {path} is not valid TOML: {exc}{toml_hint(text, exc)}") \
+            from None
     unknown = sorted(set(table) - SPEC_KEYS)
     if unknown:
         raise ValueError(f"--spec {path}: unknown key(s) {', '.join(unknown)}: expected some of "

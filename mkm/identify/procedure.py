@@ -50,7 +50,7 @@ from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
 from mkm.identify.groups import DEFAULT_GROUPS, SEARCHES
 from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
-from mkm.identify.result import Identification
+from mkm.identify.result import ONE_EPS_NOTE, Identification
 from mkm.identify.runs import (
     load_runs,
     offset_bound_said,
@@ -1705,7 +1705,7 @@ def _identifiability(runs, best, boot) -> list[str]:
         corr = float(boot["correlation"][i, j])
         eps = sorted({round(r.eps, 4) for r in runs})
         if len(eps) == 1 and (wide["theta0_deg"] or wide["rubber_scale"]):
-            notes.append(f"theta0 and the rubber are partly confounded by runs at one eps "
+            notes.append(f"{ONE_EPS_NOTE} "
                          f"({eps[0]:g}; correlation {corr:+.2f}): a run at a second eps "
                          "separates them")
         elif len(eps) > 1 and abs(corr) > CONFOUNDED and (wide["theta0_deg"] or

@@ -72,6 +72,9 @@ UNITS = {"theta0_deg": "deg", "C10_MPa": "MPa", "C01_MPa": "MPa", "gap_mm": "mm"
 OUTPUT_FILES = {"calibration": "calibration.json", "parameters": "parameters.csv",
                 "steps": "steps.csv", "identification": "identification.json"}
 TERMS = ("hysteresis_fraction", "creep_fraction", "creep_tau_s")
+#: the note of runs at one eps that leave theta0 or the rubber wide, which bounds the ready
+#: verdict to that eps
+ONE_EPS_NOTE = "theta0 and the rubber are partly confounded by runs at one eps"
 
 
 def closed_forms() -> tuple[str, ...]:
@@ -440,7 +443,8 @@ class Identification:
                     "largest |Err%| above against the instruments' accuracy before using "
                     "calibration.json")
         if not g.misfit:
-            ready = "calibration.json is ready for --calibration (mkm report, design, fem solve)"
+            ready = ("calibration.json is ready for --calibration (mkm report, design, fem "
+                     "solve)" + _one_eps_only(self))
             if self.instrument_warnings:
                 return (f"verdict: the model follows these runs within their noise (chi2/nu "
                         f"{g.reduced:.3g}), but first, "
@@ -574,6 +578,22 @@ def _entry(theta0_deg: float, model, module: str, reference: pd.DataFrame) -> di
             "command": info["command"], "date_utc": info["date_utc"],
             "code_version": source_version(module, data=False), "git": info["git"],
             "versions": info["versions"]}
+
+
+def _one_eps_only(result) -> str:
+    """Where the runs are at one eps and leave theta0 or the rubber wide: that the ready
+    calibration is of that eps (elsewhere the angle and rubber it traded give other
+    forces), and what makes it the muscle's."""
+    if not any(note.startswith(ONE_EPS_NOTE) for note in result.notes):
+        return ""
+    eps = sorted({round(r.eps, 4) for r in result.runs})
+    table = result.parameters().set_index("parameter")
+    wide = ", ".join(f"{name} {table.at[name, 'ci_low']:.3g} to {table.at[name, 'ci_high']:.3g}"
+                     f" {table.at[name, 'unit']}" for name in ("theta0_deg", "rubber_scale")
+                     if name in table.index and np.isfinite(table.at[name, "ci_low"]))
+    return (f" at eps {', '.join(f'{e:g}' for e in eps)}; at another eps, identify it with "
+            f"a run there too: one eps leaves the braid angle and the rubber traded against "
+            f"each other (95 % CI {wide})")
 
 
 def _branches(rising_pct: float, falling_pct: float) -> str:

@@ -232,6 +232,65 @@ def test_a_config_path_typed_with_backslashes_on_another_system_says_the_separat
     assert code == 0, err
 
 
+def test_a_config_notepad_saved_with_txt_or_named_without_toml_says_the_file_there(
+        tmp_path, mkm_cli, monkeypatch):
+    """Notepad saves `bench.toml` as `bench.toml.txt` unless its type is 'All files', and
+    Explorer shows that file as `bench.toml`: `--config bench.toml` said 'does not exist'
+    alone; a name typed as Explorer shows it, `bench` for `bench.toml`, likewise."""
+    from mkm.bench.config import copy_example_config
+
+    monkeypatch.chdir(tmp_path)
+    copy_example_config(tmp_path / "notepad.toml.txt")
+    copy_example_config(tmp_path / "bench.toml")
+    code, out, err = mkm_cli(["check", "--config", "notepad.toml"])
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
+        "mkm check: error: config notepad.toml does not exist: expected a TOML file; "
+        "notepad.toml.txt is there (Notepad added .txt: rename it, or save with type 'All "
+        "files')"]
+    code, out, err = mkm_cli(["check", "--config", "bench"])
+    assert code == 2 and err.strip().splitlines() == [
+        "mkm check: error: config bench does not exist: expected a TOML file; bench.toml is "
+        "there (Explorer hides the extension: type it too)"]
+    code, out, err = mkm_cli(["check", "--config", "other.toml"])  # nothing near: as it was
+    assert code == 2 and err.strip().splitlines() == [
+        "mkm check: error: config other.toml does not exist: expected a TOML file"]
+
+
+@pytest.mark.parametrize(("edited", "said"), [
+    # a Windows path typed as Explorer shows it: tomllib's 'Invalid hex value' (\U) and
+    # 'Unescaped '\' in a string' (\l) named neither the path nor the quotes it needs
+    ('id = "paper-prototype"\nout = "C:\\Users\\lab\\runs"',
+     "Invalid hex value (at line 8, column 12); a \\ in \"...\" begins an escape (\\n, \\t, "
+     "\\U...): write a Windows path in single quotes, out = 'C:\\Users\\lab\\runs', or with / "
+     "for \\"),
+    ('id = "D:\\lab\\m7"',
+     "Unescaped '\\' in a string (at line 7, column 11); a \\ in \"...\" begins an escape (\\n, "
+     "\\t, \\U...): write a Windows path in single quotes, id = 'D:\\lab\\m7', or with / for \\"),
+    # German Windows' decimal comma: 'Expected newline or end of document after a statement'
+    ('id = "paper-prototype"\nD0_mm = 30,5',
+     "Expected newline or end of document after a statement (at line 8, column 11); a decimal "
+     "comma: TOML numbers take a point, D0_mm = 30.5"),
+    # a word without quotes, Python's True: 'Invalid value'
+    ('id = paper-prototype', "Invalid value (at line 7, column 6); a text value goes in quotes: "
+     'id = "paper-prototype"'),
+    ('id = "paper-prototype"\nflag = True', "Invalid value (at line 8, column 8); TOML's true "
+     "and false are lower case: flag = true"),
+    # any other fault is tomllib's message alone
+    ('id = "paper-prototype"\nD0_mm = 30.5.1', "Expected newline or end of document after a "
+     "statement (at line 8, column 13)"),
+])
+def test_a_toml_line_windows_users_type_says_what_it_needs(tmp_path, mkm_cli, edited, said):
+    from mkm.bench.config import example_config
+
+    text = example_config().read_text("utf-8").replace('id = "paper-prototype"', edited, 1)
+    (tmp_path / "bench.toml").write_bytes(b"\xef\xbb\xbf" + text.replace("\n", "\r\n").encode())
+    code, out, err = mkm_cli(["check", "--config", str(tmp_path / "bench.toml")])
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
+        f"mkm check: error: config {tmp_path / 'bench.toml'} is not valid TOML: {said}"]
+
+
 def test_command_is_clamped_and_monitor_scaled():
     r = load_config().regulator
     assert r.command_volts(1.0) == pytest.approx(2.5)  # 0-10 V over 0-4 bar full scale

@@ -1404,6 +1404,86 @@ def test_a_group_typed_without_its_command_names_its_commands(group, expected, m
     assert err == f"mkm {group}: error: the following arguments are required: {expected}\n"
 
 
+def test_a_command_typed_without_its_run_folders_says_what_they_are_and_which_are_here(
+        tmp_path, monkeypatch, mkm_run):
+    # `mkm report` alone said 'the following arguments are required: RUN_DIR', naming neither
+    # what a RUN_DIR is nor the runs `mkm acquire` had written beside the newcomer
+    import shutil
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("MKM_OUT", raising=False)
+    expected = ("RUN_DIR: expected run folders, as `mkm acquire` or `mkm import` prints them "
+                'last, a folder of them or a pattern ("runs/*")')
+    code, out, err = mkm_run(["report"])
+    assert code == 2 and out == ""
+    assert err == (f"mkm report: error: the following arguments are required: {expected}; none "
+                   f"is in {Path('mkm-out', 'runs')}: `mkm demo` records two\n")
+    runs = Path(__file__).parents[2] / "data" / "experimental"
+    for run in sorted(runs.glob("2026*")):
+        shutil.copytree(run, Path("mkm-out", "demo", "runs", run.name))
+    code, out, err = mkm_run(["identify"])
+    assert code == 2 and err == (
+        f"mkm identify: error: the following arguments are required: {expected}; "
+        f"{Path('mkm-out', 'demo', 'runs')} holds 2: `mkm identify "
+        f"{Path('mkm-out', 'demo', 'runs')}`\n")
+    code, out, err = mkm_run(["export"])  # one run: the newest, named
+    assert code == 2 and err == (
+        "mkm export: error: the following arguments are required: run: expected a run folder, as "
+        f"`mkm acquire` or `mkm import` prints it last; {Path('mkm-out', 'demo', 'runs')} holds "
+        f"2: `mkm export {Path('mkm-out', 'demo', 'runs', '20261123T084037Z_paper-prototype')}` "
+        "(the newest)\n")
+    # MKM_OUT in a folder with a space (C:\\Users\\Lab User\\mkm-out): the line quotes it
+    shutil.copytree(Path("mkm-out", "demo", "runs"), Path("Lab User", "runs"))
+    monkeypatch.setenv("MKM_OUT", "Lab User")
+    code, out, err = mkm_run(["report"])
+    assert code == 2 and err.endswith(
+        f"; {Path('Lab User', 'runs')} holds 2: `mkm report \"{Path('Lab User', 'runs')}\"`\n")
+    monkeypatch.delenv("MKM_OUT")
+    code, out, err = mkm_run(["reprocess"])  # its --config missing too: no line to type
+    assert code == 2 and err == (
+        "mkm reprocess: error: the following arguments are required: RUN_DIR, --config: expected "
+        "a run folder, as `mkm acquire` or `mkm import` prints it last\n")
+
+
+POWERSHELL = " (PowerShell passes an unquoted one as separate words: quote it)\n"
+
+
+@pytest.mark.parametrize("argv, said", [
+    # the words an unquoted comma list becomes in PowerShell, as the docs print the commands
+    (["calibrate-loadcell", "--backend", "sim", "--masses", "0", "5", "10", "20"],
+     "mkm calibrate-loadcell: error: --masses '0' holds one mass: expected at least two "
+     'different masses for a sensitivity (0,5,10,20); a comma list is one word: --masses '
+     '"0,5,10,20"'),
+    (["design", "--require", "300N@2.5bar", "eps=0.10", "--max-outer-diameter", "64"],
+     "mkm design: error: --require '300N@2.5bar' is malformed: expected FORCE N@PRESSURE "
+     "bar,eps=EPS, for example 400N@2bar,eps=0.10; a comma list is one word: --require "
+     '"300N@2.5bar,eps=0.10"'),
+    (["identify", "mkm-out/runs", "--params", "theta0", "rubber", "L0"],
+     "mkm identify: error: unrecognized arguments: rubber L0: expected the arguments of `mkm "
+     'identify --help`; a comma list is one word: --params "theta0,rubber,L0"'),
+    (["fem", "solve", "--model", "eq2", "--D0", "35", "--t0", "2.5", "--eps", "0.05",
+      "--pressures", "0", "1", "2"],
+     "mkm fem solve: error: unrecognized arguments: 1 2: expected the arguments of `mkm fem "
+     'solve --help`; a comma list is one word: --pressures "0,1,2"'),
+    (["report", "runs", "--models", "eq2", "thickwall"],
+     "mkm report: error: unrecognized arguments: thickwall: expected the arguments of `mkm "
+     'report --help`; a comma list is one word: --models "eq2,thickwall"'),
+    # an option that takes no list, a word after it: argparse's words alone
+    (["report", "runs", "--out", "r9", "y"],
+     "mkm report: error: unrecognized arguments: y: expected the arguments of `mkm report "
+     "--help`\n"),
+    (["design", "--require", "300N@2.5bar,eps=0.1", "--top", "x", "y"],
+     "mkm design: error: --top 'x': expected a whole number\n"),
+])
+def test_a_comma_list_powershell_split_into_words_is_said_as_one_quoted_word(argv, said,
+                                                                           mkm_run):
+    # PowerShell passes an unquoted 0,5,10,20 as the words 0 5 10 20: 'unrecognized
+    # arguments: 5 10 20' or the first word refused, and nothing said of the quotes it needs
+    code, out, err = mkm_run(argv)
+    assert code == 2 and out == ""
+    assert err == (said if said.endswith("\n") else said + POWERSHELL)
+
+
 @pytest.mark.parametrize("argv, suggested", [
     (["idenitfy"], "identify"), (["fem", "solv"], "solve"), (["reprot"], "report"),
     (["zzz"], None),

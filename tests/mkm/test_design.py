@@ -407,6 +407,25 @@ def test_a_spec_file_saved_by_a_windows_editor_is_read(tmp_path):
         assert load_spec(spec) == loaded
 
 
+def test_a_spec_file_with_a_decimal_comma_or_saved_with_txt_says_what_it_needs(tmp_path):
+    # German Windows' 2,5: was 'not valid TOML (UTF-8): Expected newline or end of document
+    # after a statement (at line 3, column 15)' alone, as a bench configuration's is
+    spec = tmp_path / "spec.toml"
+    spec.write_bytes(b"[[requirement]]\r\nforce_N = 300\r\npressure_bar = 2,5\r\neps = 0.1\r\n")
+    with pytest.raises(ValueError) as caught:
+        load_spec(spec)
+    assert str(caught.value) == (
+        f"--spec {spec} is not valid TOML: Expected newline or end of document after a statement "
+        "(at line 3, column 17); a decimal comma: TOML numbers take a point, pressure_bar = 2.5")
+    # Notepad's "spec.toml.txt", typed as Explorer shows it: was 'no such file' alone
+    spec.rename(tmp_path / "notepad.toml.txt")
+    with pytest.raises(ValueError) as caught:
+        load_spec(tmp_path / "notepad.toml")
+    assert str(caught.value) == (
+        f"--spec {tmp_path / 'notepad.toml'}: no such file; {tmp_path / 'notepad.toml.txt'} is "
+        "there (Notepad added .txt: rename it, or save with type 'All files')")
+
+
 def test_a_spec_files_requirements_typed_with_units_are_converted(tmp_path):
     # as --require 0.3kN@250kPa,eps=10% and the spec's own [constraints] D0_mm = "3.5cm" are
     # (was: pressure_bar='250kPa' is not a number)

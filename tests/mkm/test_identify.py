@@ -179,6 +179,19 @@ def test_one_eps_confounds_the_angle_and_the_rubber_and_idle_terms_are_dropped(t
     assert "heldout_err" not in result.checks[0]  # one run: nothing to hold out
     # no false alarm: a confounding note only names an interval it makes wide
     assert all("wide because of it" in n for n in result.notes if "are confounded" in n)
+    # the verdict's calibration is of eps 0: it said 'ready for --calibration (mkm report,
+    # design, fem solve)' alone, and a newcomer designed at eps 0.2 with an angle and a rubber
+    # one eps could not tell apart
+    table = result.parameters().set_index("parameter")
+    assert not result.goodness.misfit
+    assert result._verdict_line().endswith(
+        "calibration.json is ready for --calibration (mkm report, design, fem solve) at eps 0; "
+        "at another eps, identify it with a run there too: one eps leaves the braid angle and "
+        "the rubber traded against each other (95 % CI theta0_deg "
+        f"{table.at['theta0_deg', 'ci_low']:.3g} to {table.at['theta0_deg', 'ci_high']:.3g} deg, "
+        f"rubber_scale {table.at['rubber_scale', 'ci_low']:.3g} to "
+        f"{table.at['rubber_scale', 'ci_high']:.3g} x Silastic S)")
+    assert table.at["rubber_scale", "ci_low"] <= 1.2 <= table.at["rubber_scale", "ci_high"]
 
 
 class BoxOnly:

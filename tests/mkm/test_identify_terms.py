@@ -236,7 +236,8 @@ def _verdict(goodness, rubber: dict) -> str:
     from mkm.identify.result import Identification
 
     return Identification._verdict_line(SimpleNamespace(goodness=goodness, rubber=rubber,
-                                                        groups=GROUPS, instrument_warnings=[]))
+                                                        groups=GROUPS, instrument_warnings=[],
+                                                        notes=[]))
 
 
 def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():

@@ -153,6 +153,38 @@ def test_aborted_run_is_reported_as_aborted(runs, report):
     assert re.search(r"status: <b><span[^>]*>complete<", html.split('<h2 id="run-2">')[0])
 
 
+def test_a_run_that_kept_no_step_says_how_it_ended_on_the_first_screen(tmp_path):
+    """A run the force interlock stopped in its first step: the verdict `mkm report` prints
+    said 'the run ended before its first step was recorded (its status and signals below say
+    why)', and below it, on the terminal, is nothing: the status and reason are in the line."""
+    # 5 % of the 1961 N cell = 98 N, reached before 0.5 bar settles at eps = 0 (some 180 N)
+    run = acquire(_sim_config(0.0, (0.5, 1.0), force_limit_fraction=0.05), out_root=tmp_path)
+    assert run.status == "aborted" and not (run.path / "steps.csv").read_text(
+        encoding="utf-8").strip().splitlines()[1:]
+    said = []
+    build_report([run.path], parse_models("eq2"), out_dir=tmp_path / "report",
+                 cache_dir=tmp_path / "cache", tolerance=None, surrogate_section=False,
+                 notify=said.append)
+    assert said == [
+        "Run 1 (eps 0.0 %, simulated): no step was kept, so no model can be scored: the run "
+        f"ended before its first step was recorded (aborted: {reason_shown(run.reason)})."]
+    assert reason_shown(run.reason).startswith("force interlock")
+
+
+def test_a_run_stopped_part_way_says_in_its_verdict_which_steps_it_is_of(runs, report):
+    """The interlock's run kept its lowest steps: its verdict said 'use Thick-wall, the
+    cheapest model within ...' as a complete run's does, a newcomer's answer for the muscle
+    from its first screen over the lowest pressures alone."""
+    _, html = report
+    kept = pd.read_csv(runs[1] / "steps.csv")
+    meta = json.loads((runs[1] / "run.json").read_text(encoding="utf-8"))
+    verdicts = [unescape(v) for v in re.findall(r'<p class="verdict">(Run \d.*?)</p>', html)]
+    assert verdicts[1].startswith(
+        f"Run 2 (eps 0.0 %, simulated), on the {len(kept)} of its 9 planned steps it kept (to "
+        f"{kept['set_pressure_bar'].max():.2f} bar; aborted: {reason_shown(meta['reason'])}): ")
+    assert verdicts[0].startswith("Run 1 (eps 12.2 %, simulated): ")  # complete: as it was
+
+
 def test_a_reason_of_any_length_is_shown_bounded(runs, tmp_path):
     """A run.json reason written by hand or another tool (a pasted log of 100 000 characters):
     the report shows its first line, cut, and says where the whole is; run.json keeps it."""

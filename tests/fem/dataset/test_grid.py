@@ -2,6 +2,7 @@
 
 import re
 
+import pandas as pd
 import pytest
 
 from mkm.cli import main
@@ -113,3 +114,25 @@ def test_a_grid_saved_by_a_windows_editor_is_read_or_named(tmp_path):
                        r"UTF-8 text \(.*byte 0xb0.*\): expected 'paper' or the path of a grid "
                        "TOML file"):
         load_grid(ansi)
+
+
+def test_a_grid_file_notepad_saved_as_unicode_or_with_a_decimal_comma_on_the_command_line(
+        tmp_path, capsys):
+    # Notepad's "Unicode" (UTF-16) was 'cannot be read as UTF-8 text ('utf-8' codec can't
+    # decode byte 0xff ...)', a decimal comma tomllib's 'Expected newline or end of document
+    # after a statement' alone, where a bench configuration so saved or typed is read or said
+    unicode = tmp_path / "unicode.toml"
+    unicode.write_bytes(GRID.replace("\n", "\r\n").encode("utf-16"))
+    out = tmp_path / "d.csv"
+    assert main(["fem", "dataset", "--grid", str(unicode), "--model", "eq2", "--out", str(out),
+                 "--cache", str(tmp_path / "cache"), "--no-progress"]) == 0
+    assert len(pd.read_csv(out)) == 3 * 2 * 2  # the grid's pressures x D0 x eps
+    comma = tmp_path / "comma.toml"
+    comma.write_text(GRID.replace("t0_mm = 2.5", "t0_mm = 2,5"), encoding="utf-8")
+    capsys.readouterr()
+    assert main(["fem", "dataset", "--grid", str(comma), "--model", "eq2", "--out",
+                 str(tmp_path / "e.csv"), "--cache", str(tmp_path / "cache")]) == 2
+    assert capsys.readouterr().err == (
+        f"mkm fem dataset: error: grid {comma} is not valid TOML: Expected newline or end of "
+        f"document after a statement (at line 4, column 10); a decimal comma: TOML "
+        "numbers take a point, t0_mm = 2.5\n")
