@@ -35,7 +35,9 @@ errors at once:
   on ramps, one continuous ramp per eps up to the plan's top pressure and back, reaching it
   in 60-120 s (:func:`mkm.bench.sim.logged_ramp`, as a lab's logger records it), imported
   with the instruments' declared accuracy (the load cell's 0.05 % of its capacity, a 0.25 %
-  class transducer's 0.25 % of the monitor's full scale) so that the fit is judged.
+  class transducer's 0.25 % of the monitor's full scale) so that the fit is judged;
+- ``no lag on ramps`` (drawn only when asked for by name): no departure, the ramps of ``tubing
+  lag on ramps`` on a correct bench, whether identify names a lag that is not there.
 
 The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
 the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
@@ -78,7 +80,7 @@ from mkm.bench.sim_settings import remove_simulator_settings
 
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubing lag",
-              "tubing lag on ramps")
+              "tubing lag on ramps", "no lag on ramps")
 #: what ``--departures`` draws by default: the recorded results' set
 DEFAULT_DEPARTURES = DEPARTURES[:3]
 #: the fields of a draw's printed line
@@ -107,8 +109,8 @@ def depart(muscle: dict, departure: str) -> dict:
             "frame_mm_at_capacity"]
     elif departure.startswith("tubing lag"):
         truth["line_tau_s"] = float(rng.uniform(0.2, 2.0))
-        if departure.endswith("ramps"):
-            out["ramp_to_top_s"] = float(rng.uniform(60.0, 120.0))
+    if departure.endswith("ramps"):
+        out["ramp_to_top_s"] = float(rng.uniform(60.0, 120.0))
     return out
 
 
@@ -170,9 +172,11 @@ def departure_value(muscle: dict) -> str:
                 f"({100 * (muscle['declared_L0_mm'] / muscle['L0_mm'] - 1):+.2f} %)")
     if muscle["departure"] == "sliding braid":
         return f"sliding, friction {muscle['hysteresis_fraction']:.3f}"
+    ramp = (f", ramps reaching the top in {muscle['ramp_to_top_s']:.0f} s"
+            if "ramp_to_top_s" in muscle else "")
+    if muscle["departure"] == "no lag on ramps":
+        return f"no lag{ramp}"
     if muscle["departure"].startswith("tubing lag"):
-        ramp = (f", ramps reaching the top in {muscle['ramp_to_top_s']:.0f} s"
-                if "ramp_to_top_s" in muscle else "")
         return f"tubing lag {t['line_tau_s']:.2f} s{ramp}"
     return (f"frame {t['frame_stiffness_N_per_mm']:.4g} N/mm ({muscle['frame_mm_at_capacity']:.2f}"
             " mm at the cell's capacity)")
