@@ -71,6 +71,12 @@ MAX_TARE_SHIFT_FRACTION = 0.1
 MAX_VENT_BELOW_BAR = 0.2
 MAX_VENT_TIMEOUT_S = 30.0
 MAX_DATASHEET_FRACTION = 0.05
+#: The over-force interlock is there for a pressure monitor that reads low by its gain: one
+#: reading 0.8 of the pressure (a 5 bar regulator's monitor read on a 4 bar scale) makes the
+#: muscle pull about 1.25 times the identified force, which the ceiling's band and friction
+#: (5-10 %) already take part of; a margin above a tenth would let that through
+MAX_OVERFORCE_MARGIN_FRACTION = 0.1
+MAX_PATH_CHARS = 4096  # PATH_MAX on Linux; Windows' long paths are shorter
 MONITOR_FAULT = "monitor fault:"  # how :meth:`Regulator.monitor_fault` begins
 MONITOR_MARGIN_FRACTION = 0.025  # 0.1 V of a 4 V span: noise and offset of a working output
 #: The pressure reading's error as ``[regulator]`` declares it, name: (unit, what it is).
@@ -418,6 +424,13 @@ class Safety:
     monitor must read below ``vent_below_bar`` within ``vent_timeout_s`` (read on while it is
     still falling then: :data:`mkm.bench.vent.FALLING_MAX_S`).
 
+    The over-force interlock is armed by ``calibration``, the ``calibration.json`` of ``mkm
+    identify`` for the muscle held (a path relative to the configuration's folder; ``mkm
+    acquire --calibration`` names one instead): the load cell may read no more than the
+    identified muscle pulls at the measured pressure (with its prediction band and friction),
+    times ``1 + overforce_margin_fraction`` (:meth:`mkm.bench.preflight.ForceCeiling.most_N`).
+    The margin is bounded by :data:`MAX_OVERFORCE_MARGIN_FRACTION`.
+
     Every limit is bounded by what it guards (checked with the other sections by
     :meth:`BenchConfig.check`): the tolerance by a tenth of the regulator's full scale, the
     follow time by 10 s, the tare spread by 1 % and the shift by 10 % of the cell's capacity.
@@ -431,9 +444,21 @@ class Safety:
     tare_max_shift_N: float = 100.0
     vent_below_bar: float = 0.05
     vent_timeout_s: float = 10.0
+    calibration: str | None = None
+    overforce_margin_fraction: float = 0.0
 
     def check(self):
         problems = Problems()
+        with problems.check():
+            if self.calibration is not None and not 0 < len(self.calibration) <= MAX_PATH_CHARS:
+                raise ValueError(f"safety.calibration={self.calibration[:60]!r} is invalid: "
+                                 "expected the path of the calibration.json `mkm identify` "
+                                 "wrote for this muscle")
+        with problems.check():
+            within("safety.overforce_margin_fraction", self.overforce_margin_fraction, 0.0,
+                   MAX_OVERFORCE_MARGIN_FRACTION, "(a fraction of the identified force)",
+                   "a wider margin hides a pressure monitor reading 0.8 of the pressure, the "
+                   "fault the over-force interlock is for")
         with problems.check():
             within("safety.force_limit_fraction", self.force_limit_fraction,
                    MIN_FORCE_LIMIT_FRACTION, 1.0, "(a fraction of the load-cell capacity)",
@@ -477,6 +502,19 @@ class BenchConfig:
     @property
     def force_limit_N(self) -> float:
         return self.safety.force_limit_fraction * self.loadcell.capacity_N
+
+    @property
+    def calibration_path(self) -> Path | None:
+        """``safety.calibration`` as a path: a relative one from the folder of the
+        configuration file (where it was written, not where a command is started), from the
+        working folder for a configuration given as text; None when not set."""
+        if self.safety.calibration is None:
+            return None
+        path = Path(self.safety.calibration).expanduser()
+        if path.is_absolute() or self.source_sha256 is None or \
+                self.recorded_source == PACKAGED_CONFIG:
+            return path
+        return Path(self.source).parent / path
 
     @property
     def simulated(self) -> bool:

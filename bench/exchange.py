@@ -60,6 +60,7 @@ from mkm.bench.tables import (
     column_text,
     counts_rows,
     current_header,
+    declared_state,
     directions,
     flags,
     join_by_time,
@@ -540,10 +541,13 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
     sha = None if joined else file_sha256(path)
     bar.more(2 * len(groups))
     built = []
-    for g, (m, override) in zip(groups, muscles, strict=True):
+    for g, (m, override, (header_notes, header_record)) in zip(groups, muscles, strict=True):
         bar.start(f"finding the steps of {g.state}")
         built.append(_build(path, sha, g, m, tare, vented, accuracy or {}, override,
                             force_sign, one_step_per_row))
+        built[-1][3][:0] = header_notes  # where the muscle came from, said first
+        if header_record:
+            built[-1][0].imported_from["declared_in_header"] = header_record
         if joined:  # each file named with its SHA-256, and how they were joined said first
             imported = built[-1][0].imported_from
             del imported["sha256"]
@@ -882,11 +886,60 @@ def _single(group: _Group, role: str) -> float:
     return float(values[0])
 
 
+#: what a file's header may declare (:data:`mkm.bench.tables.DECLARED_STATE`): the muscle's
+#: key it gives, the option that gives it too, and the columns that give it instead (a held
+#: length gives eps with the rest length)
+HEADER_STATES = (("L0", "L0_mm", "--L0", ("L0",)), ("D0", "D0_mm", "--D0", ()),
+                 ("t0", "t0_mm", "--t0", ()), ("eps", "eps", "--eps", ("eps", "length")),
+                 ("length", "eps", "--eps", ("eps", "length")))
+
+
+def _shown(key: str, value: float) -> str:
+    """``eps 0.05``, ``L0 300 mm``: a muscle's value as the messages say it."""
+    return f"eps {value:.4g}" if key == "eps" else f"{key.removesuffix('_mm')} {value:g} mm"
+
+
+def _header_states(given: dict, group: _Group) -> tuple[dict, list[str], dict]:
+    """``given`` with what the file's header declares of the muscle (its comment or title
+    lines, a TDMS file's properties: :func:`mkm.bench.tables.declared_state`) where no option
+    and no column gives it; the notes of the values so taken; and the record of each statement
+    (taken, or agreeing with the option). An option that contradicts its header beyond the
+    header's rounding (``Contraction: 5 %`` holds 4.5-5.5 %) is refused naming both."""
+    stated = declared_state(group.table.preamble)
+    values, notes, record, source = dict(given), [], {}, {}
+    for role, key, option, columns in HEADER_STATES:
+        if role not in stated or any(c in group.columns for c in columns):
+            continue
+        said = stated[role]
+        value, half = float(said.value), said.half_step
+        how = f"the file's {said.text!r} ({said.where})"
+        if role == "length":  # a held length gives eps with the rest length
+            if values.get("L0_mm") is None:
+                continue
+            rest = float(values["L0_mm"])
+            value, half = (rest - value) / rest, half / rest
+            how += f" at L0 {rest:g} mm"
+        entry = {"text": said.text, "at": said.where, key: value}
+        if values.get(key) is None:
+            values[key], source[key] = value, how
+            notes.append(f"{_shown(key, value)} from {how}")
+            record[role] = {**entry, "taken": True}
+        elif replace(said, value=value, half_step=half).agrees(float(values[key])):
+            record[role] = {**entry, "taken": False}
+        else:
+            by = source.get(key, f"{option} {float(values[key]):g}")
+            raise ValueError(f"{group.named}: {by} contradicts {how}, {_shown(key, value)}: "
+                             f"expected one of them; without {option} the file's is used")
+    return values, notes, record
+
+
 def _muscle(given: dict, group: _Group):
-    """The muscle of one state: the table's L0 and eps (or length) over the ones given, but
-    ``--L0`` over the table's L0 where its held lengths give eps anew; and what was
-    overridden (a note, or None)."""
+    """The muscle of one state: what its header declares where nothing else gives it
+    (:func:`_header_states`), the table's L0 and eps (or length) over the ones given, but
+    ``--L0`` over the table's L0 where its held lengths give eps anew; what was overridden (a
+    note, or None), and the header's statements (their notes and record)."""
     where = f"{group.named}: "
+    given, header_notes, header_record = _header_states(given, group)
     values = dict(given)
     override = None
     if "L0" in group.columns:
@@ -943,7 +996,7 @@ def _muscle(given: dict, group: _Group):
                   if v is not None}
     except (TypeError, ValueError):
         raise ValueError(f"{where}the muscle {values} has a value that is not a number") from None
-    return muscle_from_dict(values, where.rstrip(": ")), override
+    return muscle_from_dict(values, where.rstrip(": ")), override, (header_notes, header_record)
 
 
 #: header stems of the columns a table may hold the tube's size in under another name

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mkm.bench import backends
-from mkm.bench.config import MIN_FORCE_LIMIT_FRACTION, load_config
+from mkm.bench.config import MIN_FORCE_LIMIT_FRACTION, load_config, plan_steps
 from mkm.fem.eq2 import BraidLock, chou_hannaford
 from mkm.fem.eq2 import braid_lock as fem_braid_lock
 from mkm.fem.limits import LIMITS, PRACTICAL_RANGE
@@ -280,18 +280,28 @@ CREEP_FRACTION = 0.05
 
 
 
+#: the over-force interlock judges readings from this fraction of ``max_pressure_bar`` up: a
+#: monitor reading low hides over-pressure only near the limit (one reading 0.8 of the pressure
+#: hides it from 0.8 of the limit), and one that reads less than half the pressure its
+#: regulator holds (frozen near 0 bar) is the follow and stuck-monitor interlocks'; below it a
+#: load cell's zero drifting beyond its data sheet is no over-pressure
+OVERFORCE_FROM_FRACTION = 0.5
+
+
 @dataclass(frozen=True)
 class ForceCeiling:
     """The most an identified muscle pulls at the run's eps: ``force_N`` [N] at each of
-    ``pressure_bar`` [bar] (its static force plus its 95 % prediction band), the braid's
-    friction's upper end ``friction_fraction`` (a falling pressure leaves that share of the
-    static force in), and ``source``, what it was identified in (said where it trips). Built by
-    the application from a calibration of ``mkm identify``
+    ``pressure_bar`` [bar] (its static force plus its 95 % prediction band), the least
+    ``least_N`` [N] (its static force less the band, at least 0), the braid's friction's upper
+    end ``friction_fraction`` (a falling pressure leaves that share of the static force in, a
+    rising one takes it off), and ``source``, what it was identified in (said where it trips).
+    Built by the application from a calibration of ``mkm identify``
     (:func:`mkm.identify.band.force_ceiling`); the over-force interlock's bound
-    (:meth:`mkm.bench.worker.Acquisition.overforce`)."""
+    (:meth:`most_N`, :meth:`mkm.bench.worker.Acquisition.overforce`)."""
 
     pressure_bar: tuple[float, ...]
     force_N: tuple[float, ...]
+    least_N: tuple[float, ...]
     friction_fraction: float
     source: str
 
@@ -299,6 +309,93 @@ class ForceCeiling:
         """What run.json's ``calibration`` records of it (``force_ceiling``)."""
         return {"force_ceiling": {"source": self.source,
                                   "friction_fraction": self.friction_fraction}}
+
+    def most_N(self, config, reading_bar: float, peak_bar: float) -> tuple[float, str]:
+        """The most [N] the load cell may read at the monitor's ``reading_bar`` [bar], the
+        highest reading since the muscle was last vented being ``peak_bar``, and where that
+        bound comes from: the ceiling at the reading taken its declared accuracy high
+        (``[regulator]``) with the friction, but no more than the ceiling at the peak so taken
+        (the braid holds a force at most at what that pressure pulled up), times ``1 +
+        safety.overforce_margin_fraction``."""
+        offset_bar, gain = config.regulator.reading_bounds()
+        high_bar = reading_bar + offset_bar + gain * reading_bar
+        friction = self.friction_fraction
+        most = (1.0 + friction) * float(np.interp(high_bar, self.pressure_bar, self.force_N))
+        where = (f"at {high_bar:.3f} bar, the reading at its accuracy, with its 95 % band and "
+                 f"{100 * friction:.3g} % for the braid's friction")
+        peak_bar = peak_bar + offset_bar + gain * peak_bar
+        rise = float(np.interp(peak_bar, self.pressure_bar, self.force_N))
+        if rise < most:
+            most, where = rise, (f"at {peak_bar:.3f} bar, the highest reading since the vent "
+                                 "at its accuracy, with its 95 % band: the braid holds no more "
+                                 "than that pressure pulled")
+        margin = config.safety.overforce_margin_fraction
+        if margin > 0:
+            most *= 1.0 + margin
+            where += f", plus safety.overforce_margin_fraction={margin:g}"
+        return most, where
+
+    def least_rising_N(self, config, reading_bar: float) -> float:
+        """The least [N] the muscle pulls on a rise to the monitor's ``reading_bar`` [bar]: the
+        ceiling's least at the reading taken its declared accuracy low, the friction taken
+        off."""
+        offset_bar, gain = config.regulator.reading_bounds()
+        low_bar = max(reading_bar - offset_bar - gain * reading_bar, 0.0)
+        return ((1.0 - self.friction_fraction)
+                * float(np.interp(low_bar, self.pressure_bar, self.least_N)))
+
+
+def ceiling_lines(config, ceiling: ForceCeiling) -> tuple[list[str], str]:
+    """What the over-force interlock holds each planned step of ``config`` to
+    (:meth:`ForceCeiling.most_N`, at the step's pressure read as commanded, the peak since
+    the vent the highest step since a step below ``safety.vent_below_bar``), below the force
+    interlock's limit, in lines for ``mkm check``; and why the plan must trip ("" when it need
+    not): the identified muscle pulls at least the force interlock's limit on the rise to the
+    top step (:meth:`ForceCeiling.least_rising_N`), which pre-conditioning or the staircase
+    reaches first."""
+    limit_N, top = config.force_limit_N, max(config.sequence.pressures_bar)
+    watched_bar = OVERFORCE_FROM_FRACTION * config.regulator.max_pressure_bar
+    lines = [f"over-force ceiling: {ceiling.source} at eps {config.muscle.eps:g}, its 95 % band "
+             f"and {100 * ceiling.friction_fraction:.3g} % friction, at the reading taken its "
+             "accuracy high; rising, no more than at the highest reading since the vent (the "
+             "braid holds no more than that pressure pulled); watched from "
+             f"{watched_bar:g} bar ({OVERFORCE_FROM_FRACTION:g} x regulator.max_pressure_bar), "
+             f"the force interlock at {limit_N:.0f} N above it:",
+             f"{'step':>6} {'P [bar]':>8} {'most [N]':>9}  held by"]
+    peak = 0.0  # pre-conditioning, if any, ends vented
+    for s in plan_steps(config):
+        below = s.set_pressure_bar <= config.safety.vent_below_bar
+        peak = s.set_pressure_bar if below else max(peak, s.set_pressure_bar)
+        if s.set_pressure_bar < watched_bar:
+            most, by = "", "not watched"
+        else:
+            most_N, where = ceiling.most_N(config, s.set_pressure_bar, peak)
+            by = "the peak since the vent" if "highest reading" in where else \
+                "the reading with the friction"
+            if not most_N < limit_N:
+                most_N, by = limit_N, "the force interlock"
+            most = f"{most_N:.1f}"
+        lines.append(f"{s.step:>6} {s.set_pressure_bar:>8g} {most:>9}  {s.direction}, {by}")
+    least_N = ceiling.least_rising_N(config, top)
+    if least_N >= limit_N:
+        return lines, (f"the muscle identified pulls at least {least_N:.0f} N on the rise to the "
+                       f"top step, {top:g} bar ({ceiling.source}: its force less its 95 % band "
+                       f"and friction, at the reading at its accuracy), at or beyond the force "
+                       f"interlock at {limit_N:.0f} N ({config.safety.force_limit_fraction:g} x "
+                       f"loadcell.capacity_N={config.loadcell.capacity_N:g}): the run must stop "
+                       f"there; lower the top pressure to {_below(ceiling, config):g} bar or "
+                       "less, or use a larger load cell")
+    lines.append(f"the top step, {top:g} bar: the muscle identified pulls at least "
+                 f"{least_N:.0f} N on its rise, under the force interlock at {limit_N:.0f} N")
+    return lines, ""
+
+
+def _below(ceiling: ForceCeiling, config) -> float:
+    """The highest pressure [bar], to 0.05 bar, on the rise to which the identified muscle
+    surely pulls less than the force interlock's limit."""
+    grid = np.arange(0.0, config.regulator.max_pressure_bar + 1e-9, 0.05)
+    under = [p for p in grid if ceiling.least_rising_N(config, p) < config.force_limit_N]
+    return float(round(max(under), 2)) if under else 0.0
 
 
 def force_bounds_N(config, n: int = 1001) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -22,7 +22,7 @@ from mkm.bench.backend import AOWriteFailed, Backend, BenchError, DaqDisconnecte
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
-from mkm.bench.preflight import expected_force_N, warnings
+from mkm.bench.preflight import ForceCeiling, ceiling_lines, expected_force_N, warnings
 from mkm.bench.run import (
     OPEN_HUNG,
     READ_HANG_MARGIN_S,
@@ -588,13 +588,16 @@ def calibrate_loadcell(config: BenchConfig, mass_kg, backend: str | None = None,
     return {**fit_loadcell(mass_kg, volts), "measured_on": bench}
 
 
-def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual"
-          ) -> tuple[str, list[str], str]:
+def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual",
+          ceiling: ForceCeiling | None = None) -> tuple[str, list[str], str]:
     """Dry run: device information, limits, the bench read at rest, vented, as a run's tare
     reads it (``sequence.tare_s``: :func:`at_rest`), the planned steps, the estimated duration
-    and the expected uncertainty budget (:func:`expected_budget_lines`); the warnings of
+    and the expected uncertainty budget (:func:`expected_budget_lines`); with the identified
+    muscle's ``ceiling``, the force each step is held to
+    (:func:`mkm.bench.preflight.ceiling_lines`); the warnings of
     :func:`mkm.bench.preflight.warnings` (braid lock, load cell) and of the reading at rest; and
-    why a run's tare would refuse the bench as it is ("" when it would not)."""
+    why a run's tare would refuse the bench as it is, or its plan must trip ("" when
+    neither)."""
     config = with_backend(config, backend)
     device = make_backend(config, clock)
     with session(device, "check") as info:
@@ -602,7 +605,7 @@ def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual
     try:
         rest, refusal = at_rest(volts, config), ""
     except TareInvalid as exc:
-        rest, refusal = {}, str(exc)
+        rest, refusal = {}, f"{exc}; `mkm acquire` would stop at its tare"
     shortest, longest = estimate_duration_s(config)
     m, cell, reg = config.muscle, config.loadcell, config.regulator
     lines = [
@@ -626,6 +629,10 @@ def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual
         f"sequence.max_duration_h = {config.sequence.max_duration_h:g} h)",
         *expected_budget_lines(config),
     ]
+    if ceiling is not None:
+        held, must_trip = ceiling_lines(config, ceiling)
+        lines += held
+        refusal = refusal or (must_trip and f"{must_trip}; `mkm acquire` refuses this plan")
     found = [rest[key] for key in AT_REST_WARNINGS if rest.get(key)]
     return "\n".join(lines), [*warnings(config, rest.get("std_N")), *found], refusal
 

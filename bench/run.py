@@ -23,7 +23,8 @@ Safety, in every exit path:
   device, then records the truth in run.json;
 - a device lost mid-run (its vent write failing) is reset and vented on fresh tasks, within
   a few seconds, before a vent by hand is asked for (``revive`` of the NI backend);
-- a read of the device that hangs past its timeout with a pressure commanded is vented by a
+- a read of the device that hangs past its timeout with the muscle pressurised (a pressure
+  commanded or read: :meth:`mkm.bench.worker.Acquisition.pressurised`) is vented by a
   watchdog thread, and recorded as it hangs (:data:`READ_HANG_MARGIN_S`); so is a command write
   that hangs, and a read of the shutdown that hangs after its vent; the calls before the
   watchdog (the device's serial number, its open, the start of the inputs) are bounded
@@ -66,7 +67,7 @@ from mkm.bench.bounded import call_within
 from mkm.bench.config import MONITOR_FAULT, BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
 from mkm.bench.ownership import BenchOwner, StateFolderBroken
-from mkm.bench.preflight import ForceCeiling, braid_lock, warnings
+from mkm.bench.preflight import ForceCeiling, braid_lock, ceiling_lines, warnings
 from mkm.bench.recorder import Recorder
 from mkm.bench.sequence import Staircase
 from mkm.bench.signals import StopSignal, StopSignals, fatal_trace
@@ -373,14 +374,16 @@ class _Plot:
 
 
 class _ReadWatchdog:
-    """Vents a run whose read of the device hangs with a pressure commanded.
+    """Vents a run whose read of the device hangs with the muscle pressurised: a pressure
+    commanded, or read above the vent threshold whatever the command
+    (:meth:`mkm.bench.worker.Acquisition.pressurised`).
 
     A read returns within its timeout and its block's time, or raises (the read interlock then
     vents); a driver that does not keep its timeout holds the acquisition loop, every interlock
     with it, while the regulator holds its pressure. A thread of its own looks at the loop's
     read (:attr:`mkm.bench.worker.Acquisition.reading_since`) every :data:`WATCH_EVERY_S`:
-    past ``daq.read_timeout_s`` + the block's time + :data:`READ_HANG_MARGIN_S` with a pressure
-    commanded it writes the vent (acts first), then keeps the books (so it does for the loop's
+    past ``daq.read_timeout_s`` + the block's time + :data:`READ_HANG_MARGIN_S` so pressurised
+    it writes the vent (acts first), then keeps the books (so it does for the loop's
     command write, :attr:`mkm.bench.worker.Acquisition.writing`, past the AO write's timeout
     :data:`WATCHDOG_WRITE_S` and the margin): the command's row, the
     bench marker, run.json ``failed`` with why and the vent not verified (a process that never
@@ -422,8 +425,9 @@ class _ReadWatchdog:
                     self._write_hung(acq, writing):
                 handled.add(writing[0])
                 continue
-            since, held_bar = acq.reading_since, acq.command_bar
-            if since is None or since in handled or not (held_bar > 0 or self._vented.is_set()):
+            since, held = acq.reading_since, acq.held_said()
+            if since is None or since in handled or not (acq.pressurised()
+                                                         or self._vented.is_set()):
                 continue
             hung_s = time.monotonic() - since
             if hung_s < self.limit_s:
@@ -435,7 +439,7 @@ class _ReadWatchdog:
             t_s = acq.next_index / acq.rate_hz
             self._trip(acq, t_s, f"read interlock: the read of the device did not return "
                        f"within {hung_s:.1f} s (its timeout {run.config.daq.read_timeout_s:g} "
-                       f"s) with {held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
+                       f"s) with {held} after {t_s:g} s: the driver hangs")
 
     def _trip(self, acq: Acquisition, t_s: float, why: str) -> None:
         """A hang with a pressure held: the loop stops at its next block from now on, whatever
@@ -455,14 +459,15 @@ class _ReadWatchdog:
         if self._vented.is_set():
             return False
         since, asked_bar = writing
-        hung_s, held_bar = time.monotonic() - since, acq.command_bar
-        if hung_s < WATCHDOG_WRITE_S + READ_HANG_MARGIN_S or not max(held_bar, asked_bar) > 0:
+        hung_s = time.monotonic() - since
+        if hung_s < WATCHDOG_WRITE_S + READ_HANG_MARGIN_S or not (asked_bar > 0
+                                                                 or acq.pressurised()):
             return False
         t_s = acq.next_index / acq.rate_hz
         # the loop also vents a pressure the hung write lets out late
         self._trip(acq, t_s, f"write interlock: the command of {asked_bar:g} bar did not return "
                    f"within {hung_s:.1f} s (its timeout {WATCHDOG_WRITE_S:g} s) with "
-                   f"{held_bar:g} bar commanded after {t_s:g} s: the driver hangs")
+                   f"{acq.held_said()} after {t_s:g} s: the driver hangs")
         return True
 
     def _vent(self) -> tuple[bool, str]:
@@ -1254,13 +1259,24 @@ def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtu
     a muscle outside the practical range, is said (:func:`mkm.bench.preflight.warnings`).
     ``notify`` receives the operator's lines (default: stderr, ``mkm <command>: ...``, with
     ``command`` the command the user ran). ``ceiling``: the most the muscle ``mkm identify``
-    identified pulls (:func:`mkm.identify.band.force_ceiling`), which arms the over-force
-    interlock (:meth:`mkm.bench.worker.Acquisition.overforce`).
+    identified pulls (:func:`mkm.identify.band.config_ceiling`), which arms the over-force
+    interlock (:meth:`mkm.bench.worker.Acquisition.overforce`); required where
+    ``safety.calibration`` names one (the bench cannot read an identification itself), and a
+    plan whose top step the identified muscle must pull past the force interlock at is
+    refused (:func:`mkm.bench.preflight.ceiling_lines`); both ``ValueError``, nothing
+    pressurised.
     """
     config = with_backend(config, backend)
     lock = braid_lock(config)
     if lock and not allow_past_lock:
         raise ValueError(f"{lock}: pass --allow-past-lock to record it anyway")
+    if ceiling is None and config.safety.calibration is not None:
+        raise ValueError(f"config {config.source}: safety.calibration="
+                         f"{config.safety.calibration!r} arms the over-force interlock: pass "
+                         "its ceiling (ceiling=mkm.identify.band.config_ceiling(config)), as "
+                         "`mkm acquire` does")
+    if ceiling is not None and (refusal := ceiling_lines(config, ceiling)[1]):
+        raise ValueError(f"{refusal}; nothing was pressurised")
     for warning in warnings(config):
         (notify or StderrNotice(command))(f"warning: {warning}")
     check_out_root(out_root)  # before the device is opened

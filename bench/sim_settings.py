@@ -215,6 +215,22 @@ class Sim:
                                  f"expected one of {', '.join(choices)}")
 
 
+def sim_of(truth: dict, seed: int, model: str = "thickwall", **departures) -> dict:
+    """The ``[sim]`` table of a bench holding the muscle ``truth``, given in identify's
+    parameters: ``theta0_deg``, ``rubber_scale`` (Silastic S's constants times it) and, where
+    given, ``hysteresis_fraction`` and ``creep_fraction`` (else the simulator's defaults);
+    ``departures`` are further ``[sim.truth]`` values (instruments, gap, frame). A blind test
+    draws ``truth`` and compares what identify fits with it."""
+    from mkm.fem.materials import SILASTIC_S
+
+    scale = truth["rubber_scale"]
+    friction = {name: truth[name] for name in ("hysteresis_fraction", "creep_fraction")
+                if name in truth}
+    return {"model": model, "seed": seed, **friction,
+            "truth": {"theta0_deg": truth["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
+                      "C01_MPa": scale * SILASTIC_S.C01_MPa, **departures}}
+
+
 def remove_simulator_settings(run_dir) -> None:
     """Delete a simulated run's ``[sim]`` settings, its truth among them, from its run.json
     (the simulator's record and ``sim.*`` overrides) and its config.toml: what is left is what a

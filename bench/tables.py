@@ -36,6 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
+from mkm.bench.series import PLATEAU_TOLERANCE_BAR
 from mkm.bench.settings import TEXT_END_PADDING, saved_text
 from mkm.core.guards import table_file
 from mkm.core.records import file_sha256
@@ -261,9 +262,10 @@ class RawTable:
     #: each row's file where several files were joined into this table (:func:`join_files`);
     #: empty for one file
     row_files: list[str] = field(default_factory=list)
-    #: the lines above the header row (comments and titles), as written: what the file says
-    #: of the record (a held length, the muscle)
-    preamble: list[tuple[int, str]] = field(default_factory=list)
+    #: the lines above the header row (comments and titles), as written, each with its line:
+    #: what the file says of the record (a held length, the muscle); a TDMS file's properties
+    #: as ``name: value``, each with where it is; several files' with their file's name
+    preamble: list[tuple[int | str, str]] = field(default_factory=list)
 
     @property
     def part(self) -> str:
@@ -840,7 +842,8 @@ def _tdms_table(path: Path, group: str, properties: dict, channels: list) -> Raw
                 {key: value for key, value in props.items() if key.startswith("wf_")})
     cells = [list(row) for row in itertools.zip_longest(*columns, fillvalue="")]
     return RawTable(path, group, header, 1, cells, list(range(2, rows + 2)),
-                    properties=table_properties)
+                    properties=table_properties,
+                    preamble=_tdms_statements(properties, channels))
 
 
 def _plain_float(value) -> float:
@@ -2808,66 +2811,132 @@ def table_files(given: list[str | Path]) -> list[Path]:
     return files
 
 
-_DECLARED_NUMBER = r"([-+]?\d+(?:[.,]\d+)?)"
-#: what a file's comment or title lines declare of the muscle's state, each a pattern whose
-#: groups are the value and its unit: a rest length, a held length (``L = 135 mm``, not
-#: ``LM8``), an eps, the muscle's id (one holding a digit, ``LM-8``: not ``muscle pressure``)
+_DECLARED_NUMBER = r"(?P<value>[-+]?\d+(?:[.,]\d+)?)"
+_LENGTH_UNITS = r"mm|cm|m"
+
+
+def _statement(name: str, units: str | None) -> re.Pattern:
+    """A header line's statement of one quantity: its name, its unit in brackets or after an
+    underscore (``L0 [mm]: 300``, a TDMS property's ``L0_mm: 300``) or after the value
+    (``L0 = 300 mm``); ``units`` None: a value of no unit (an id)."""
+    if units is None:
+        return re.compile(rf"(?:{name})\s*[:=]?\s*(?P<value>[A-Za-z][\w.-]*?\d[\w.-]*)"
+                          r"(?=[\s,;)]|$)", re.IGNORECASE)
+    return re.compile(rf"(?:{name})(?:\s*[\[(]\s*(?P<before>{units})\s*[\])]|_(?P<suffix>{units})"
+                      rf"\b)?\s*[:=]?\s*{_DECLARED_NUMBER}(?:\s*(?P<after>{units})(?![\w%]))?",
+                      re.IGNORECASE)
+
+
+#: what a file's comment or title lines (or a TDMS file's properties) declare of the muscle,
+#: each a pattern whose groups are the value and its unit: a rest length, a held length
+#: (``L = 135 mm``, not ``LM8``), an eps (``Contraction: 5 %``; a number without ``%`` a
+#: fraction, below 1), the tube's inner diameter and wall, the muscle's id (one holding a
+#: digit, ``LM-8``: not ``muscle pressure``); a length without its unit is no statement
 DECLARED_STATE = {
-    "L0": re.compile(r"(?:\bL_?0|\b(?:rest(?:ing)?|initial|nominal|free)\s+length)\s*[:=]?\s*"
-                     + _DECLARED_NUMBER + r"\s*(mm|cm|m)\b", re.IGNORECASE),
-    "length": re.compile(r"(?:\b(?:held\s+|fixed\s+|clamped\s+)?length|\bl(?:ä|ae)nge"
-                         r"|\bL(?:_?held)?(?=\s*[:=]))\s*[:=]?\s*" + _DECLARED_NUMBER
-                         + r"\s*(mm|cm|m)\b", re.IGNORECASE),
-    "eps": re.compile(r"(?:\beps(?:ilon)?|ε|\bstrain|\bcontraction|\bkontraktion)\s*[:=]?\s*"
-                      + _DECLARED_NUMBER + r"\s*(%)?", re.IGNORECASE),
-    "muscle": re.compile(r"\b(?:muscle|muskel)(?:\s+id)?\s*[:=]?\s*([A-Za-z][\w.-]*?\d[\w.-]*)"
-                         r"()(?=[\s,;)]|$)", re.IGNORECASE),
+    "L0": _statement(r"\bL_?0|\b(?:rest(?:ing)?|initial|nominal|free)\s+length"
+                     r"|\bruhel(?:ä|ae)nge|\bausgangsl(?:ä|ae)nge", _LENGTH_UNITS),
+    "length": _statement(r"\b(?:held\s+|fixed\s+|clamped\s+)?length|\bl(?:ä|ae)nge"
+                         r"|\bL(?:_?held)?(?=\s*[:=])", _LENGTH_UNITS),
+    "eps": _statement(r"\beps(?:ilon)?|ε|\bstrain|\bcontraction|\bkontraktion", "%"),
+    "D0": _statement(r"\bD_?0|\b(?:inner|inside|internal)\s+diameter|\binnendurchmesser",
+                     _LENGTH_UNITS),
+    "t0": _statement(r"\bt_?0|\bwall\s+thickness|\bwandst(?:ä|ae)rke", _LENGTH_UNITS),
+    "muscle": _statement(r"\b(?:muscle|muskel)(?:\s+id)?", None),
 }
 _TO_MM = {"mm": 1.0, "cm": 10.0, "m": 1000.0}
 
 
-def declared_state(preamble: list[tuple[int, str]]) -> dict[str, tuple[object, str, int]]:
+@dataclass(frozen=True)
+class Stated:
+    """One quantity a file's header declares (:func:`declared_state`)."""
+
+    value: object  # mm, a fraction, or the id
+    text: str  # as written: 'Contraction: 5 %'
+    at: int | str  # its line, or where else in the file (a TDMS property)
+    #: half a unit of its last digit as written, in ``value``'s unit: 'L0 = 300 mm' holds any
+    #: length within 0.5 mm of 300
+    half_step: float = 0.0
+
+    @property
+    def where(self) -> str:
+        return f"line {self.at}" if isinstance(self.at, int) else str(self.at)
+
+    def agrees(self, value: float) -> bool:
+        """Whether ``value`` rounds to this one as written (or lies within 1e-9 of it: a TDMS
+        property's float)."""
+        return abs(value - float(self.value)) <= max(self.half_step,
+                                                     1e-9 * abs(float(self.value)), 1e-12)
+
+
+def declared_state(preamble: list[tuple[int | str, str]]) -> dict[str, Stated]:
     """What a file's lines above its header declare of the muscle's state
-    (:data:`DECLARED_STATE`): role -> (value: mm, a fraction or the id; as written; line),
-    each role's first."""
-    found: dict[str, tuple[object, str, int]] = {}
-    for number, line in preamble:
+    (:data:`DECLARED_STATE`): role -> :class:`Stated`, each role's first."""
+    found: dict[str, Stated] = {}
+    for at, line in preamble:
         taken: list[tuple[int, int]] = []
         for role, pattern in DECLARED_STATE.items():
             for match in pattern.finditer(line):
                 if role in found or any(a < match.end() and match.start() < b
                                         for a, b in taken):
                     continue  # a rest length is no held length
-                taken.append(match.span())
-                text, unit = match.group(1), match.group(2)
+                text = match.group("value")
                 if role == "muscle":
-                    value: object = text
+                    found[role] = Stated(text, match.group(0).strip(), at)
+                    taken.append(match.span())
+                    continue
+                unit = next((u for u in (match.group(g) for g in ("before", "suffix", "after"))
+                             if u), None)
+                value = float(text.replace(",", "."))
+                digits = len(re.split(r"[.,]", text)[1]) if re.search(r"[.,]", text) else 0
+                half = 0.5 * 10.0 ** -digits
+                if role == "eps":
+                    scale = 0.01 if unit else 1.0
+                    if not 0 <= value * scale < 1:
+                        continue  # '5' of no unit: a percentage or a fraction, not guessed
+                elif unit is None:
+                    continue
                 else:
-                    value = float(text.replace(",", "."))
-                    value = (value * _TO_MM[unit.lower()] if role in ("L0", "length")
-                             else value / 100 if unit else value)
-                found[role] = (value, match.group(0).strip(), number)
+                    scale = _TO_MM[unit.lower()]
+                taken.append(match.span())
+                found[role] = Stated(value * scale, match.group(0).strip(), at, half * scale)
     return found
+
+
+def _tdms_statements(properties: dict, channels: list) -> list[tuple[str, str]]:
+    """A TDMS group's file, group and channel properties as header lines
+    (:func:`declared_state`), each ``name: value`` and where it is: NI's way to store what a
+    lab writes above a table's header."""
+    owners = [("the file", properties.get("file", {})), (None, properties.get("group", {})),
+              *((f"channel {name!r}", props) for name, props, *_ in channels)]
+    lines = []
+    for owner, props in owners:
+        for key, value in props.items():
+            if isinstance(value, float):
+                value = f"{value:.15g}"
+            lines.append((f"the property {key!r} of {owner or 'its group'}", f"{key}: {value}"))
+    return lines
 
 
 def _check_declared_states(read: list[tuple[Path, RawTable, dict]]) -> None:
     """``ValueError`` where two files' headers declare different muscle states (a held length,
-    a rest length, an eps or a muscle id): one run of one state cannot hold both."""
+    a rest length, an eps, a tube or a muscle id): one run of one state cannot hold both."""
     declared = [(path.name, declared_state(table.preamble)) for path, table, _ in read]
     for role in DECLARED_STATE:
         said = [(name, state[role]) for name, state in declared if role in state]
-        for name, (value, text, line) in said[1:]:
-            first, (value0, text0, line0) = said[0]
-            same = (value == value0 if role == "muscle" else
-                    math.isclose(value, value0, rel_tol=1e-6, abs_tol=1e-9))
+        for name, stated in said[1:]:
+            first, stated0 = said[0]
+            same = (stated.value == stated0.value if role == "muscle" else
+                    math.isclose(stated.value, stated0.value, rel_tol=1e-6, abs_tol=1e-9))
             if not same:
                 what = ("import each muscle's files as a run of its own, with its --id"
-                        if role == "muscle" else "import each state's files as a run of its "
-                        "own, with its --eps" + (" and --L0" if role == "L0" else ""))
-                raise ValueError(f"{name}: its header declares {text!r} (line {line}), "
-                                 f"{first}'s {text0!r} (line {line0}): two muscle states, "
-                                 "which one run cannot hold: expected the files of one muscle "
-                                 f"at one length; {what}")
+                        if role in ("muscle", "D0", "t0") else "import each state's files as "
+                        "a run of its own, with its --eps" + (" and --L0" if role == "L0"
+                                                              else ""))
+                raise ValueError(f"{name}: its header declares {stated.text!r} "
+                                 f"({stated.where}), {first}'s {stated0.text!r} "
+                                 f"({stated0.where}): two muscle states, which one run cannot "
+                                 "hold: expected the files of one muscle at one length; "
+                                 f"{what}")
 
 
 @dataclass
@@ -2933,6 +3002,8 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
             if role in found:
                 column_values(table, found[role])
         read.append((path, table, found))
+    pressures = [column_values(table, found["pressure"]) if "pressure" in found else None
+                 for _, table, found in read]
     first_path, first, first_found = read[0]
     shape = {r: (c.header, c.describe()["unit"]) for r, c in first_found.items()}
     for path, _table, found in read[1:]:
@@ -3009,25 +3080,88 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
                       "clock_as_read_s": [float(times[0]), float(times[-1])],
                       "placed_at_s": float(placed[j])})
     names = [f["file"] for f in files]
+    gaps = [placed[j + 1] - (placed[j] + clocks[order[j]][0][-1] - clocks[order[j]][0][0])
+            for j in range(len(order) - 1)]
+    # the level a hold keeps across each join (a logger rolling its file mid-hold), or None
+    held = [_held_across(pressures[a], pressures[b]) for a, b in itertools.pairwise(order)]
+    for j, (gap, level) in enumerate(zip(gaps, held, strict=True), start=1):
+        files[j]["join"] = {"gap_s": float(gap), "within_hold_bar": level}
+    within = [j for j, level in enumerate(held) if level is not None]
     if clock == "continues":
-        gaps = [placed[j + 1] - (placed[j] + clocks[order[j]][0][-1] - clocks[order[j]][0][0])
-                for j in range(len(order) - 1)]
+        # a join a few samples late within a hold: the samples the logger lost, named
+        lost = [j for j in range(len(gaps))
+                if gaps[j] > JOIN_LATE_INTERVALS * _interval_s(clocks[order[j]][0])]
         note = (f"{len(files)} files joined on their clock, which continues from one to the "
                 f"next: ordered by it, {names[0]} first, the time between files as logged "
-                f"({min(gaps):.3g}-{max(gaps):.3g} s)")
+                f"({min(gaps):.3g}-{max(gaps):.3g} s)"
+                + "".join(f"; {names[j + 1]} begins {gaps[j]:.3g} s after {names[j]}'s last "
+                          "sample" + (f", within the hold at {held[j]:.3g} bar: that much of "
+                                      "it not logged" if held[j] is not None else "")
+                          for j in lost[:JOIN_GAPS_SAID])
+                + (f" (and {len(lost) - JOIN_GAPS_SAID} more such gaps)"
+                   if len(lost) > JOIN_GAPS_SAID else "")
+                + (f"; {len(within) - len(set(within) & set(lost))} join(s) within a hold, "
+                   "the clock on by one sample: one hold" if set(within) - set(lost) else ""))
     else:
+        steps = len(within) < len(held)
         note = (f"{len(files)} files joined in the order given ({names[0]} first), each "
                 "file's clock restarting at its start: "
                 + (f"each placed {between_files_s:g} s (--between-files) after the one before"
                    if between_files_s is not None else
                    "the time between them unknown, each placed one sample after the one "
-                   "before, its step taken as the file begins: each hold's creep timed from its "
-                   "file's start; --between-files SECONDS gives the time from one file's last "
-                   "sample to the next one's first"))
+                   "before" + (", its step taken as the file begins: each hold's creep timed "
+                               "from its file's start" if steps else "")
+                   + "; --between-files SECONDS gives the time from one file's last sample to "
+                   "the next one's first")
+                + (f"; {len(within)} of the {len(held)} joins within a hold (the pressure at "
+                   "one level across each, as a logger that rolls its file every few minutes "
+                   f"writes it: {', '.join(names[j + 1] for j in within[:JOIN_GAPS_SAID])}"
+                   + (", ..." if len(within) > JOIN_GAPS_SAID else "")
+                   + "), each joined as one hold"
+                   + (f", the {between_files_s:g} s of --between-files put into it"
+                      if between_files_s is not None else
+                      ", any time lost between the files unknown") if within else ""))
     source = first_path.with_name(f"{first_path.name} and {len(files) - 1} more")
-    table = replace(first, source=source, rows=rows, row_numbers=numbers, row_files=row_files)
+    # every file's header lines, each named with its file (they agree: checked above)
+    preamble = [(f"{path.name}, " + (f"line {at}" if isinstance(at, int) else str(at)), line)
+                for path, table, _ in read for at, line in table.preamble]
+    table = replace(first, source=source, rows=rows, row_numbers=numbers, row_files=row_files,
+                    preamble=preamble)
     found = {**first_found, "time": Column("time", index, first_found["time"].header, "s")}
     return JoinedFiles(table, found, files, clock, note)
+
+
+#: the samples at each side of a join whose pressures judge whether it falls within a hold
+JOIN_SAMPLES = 5
+#: a join of a continuing clock later than this many sampling intervals is said: samples lost
+JOIN_LATE_INTERVALS = 2.0
+#: the joins named in the note (the others counted)
+JOIN_GAPS_SAID = 3
+
+
+def _interval_s(times: np.ndarray) -> float:
+    """A file's sampling interval [s]: its times' median step (0 for one sample)."""
+    return float(np.median(np.diff(times))) if times.size > 1 else 0.0
+
+
+def _held_across(before: np.ndarray | None, after: np.ndarray | None) -> float | None:
+    """The pressure [bar] a hold keeps across the join of two files (``before``'s pressures,
+    then ``after``'s): the last and the first :data:`JOIN_SAMPLES` readings each within a
+    staircase's plateau band (:data:`mkm.bench.series.PLATEAU_TOLERANCE_BAR`) of their median,
+    the two medians within it of each other (a logger that rolled its file mid-hold); None
+    where the pressure steps at the join (a file per step) or moves (a ramp), or a file has too
+    few readings."""
+    if before is None or after is None:
+        return None
+    last, first = before[np.isfinite(before)][-JOIN_SAMPLES:], \
+        after[np.isfinite(after)][:JOIN_SAMPLES]
+    if last.size < JOIN_SAMPLES or first.size < JOIN_SAMPLES:
+        return None
+    a, b = float(np.median(last)), float(np.median(first))
+    if (np.max(np.abs(last - a)) > PLATEAU_TOLERANCE_BAR or np.max(np.abs(first - b))
+            > PLATEAU_TOLERANCE_BAR or abs(a - b) > PLATEAU_TOLERANCE_BAR):
+        return None
+    return round((a + b) / 2, 6)
 
 
 def _span(first_s: float, last_s: float, origin) -> str:

@@ -37,8 +37,10 @@ disk, :mod:`mkm.bench.recorder` writes behind it):
   held, or trailing by more than that much sample time for as long (they are written when it
   returns); the run is ``failed``.
 
-- reading: a read that times out while a pressure is commanded (at 0 bar, ``daq.read_retries``
-  timeouts in a row are retried); the run is ``failed``.
+- reading: a read that times out while the muscle may hold pressure
+  (:meth:`Acquisition.pressurised`: a pressure commanded, or a reading above
+  ``safety.vent_below_bar``; vented, ``daq.read_retries`` timeouts in a row are retried); the
+  run is ``failed``.
 
 If the interlock's own vent write fails, the reason says so and asks for a vent by hand.
 """
@@ -60,6 +62,7 @@ from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.preflight import (
     CREEP_FRACTION,
     FRICTION_FRACTION,
+    OVERFORCE_FROM_FRACTION,
     ForceCeiling,
     adc_step_N,
     bound_assumes,
@@ -81,12 +84,6 @@ OVERPRESSURE_HARD_FRACTION = 0.10
 #: The bench marker takes milliseconds on a local disk; a state folder slower than this [s] hangs
 #: (a network share), and the loop goes on without it rather than leave the interlocks unwatched.
 MARKER_WAIT_S = 0.5
-#: the over-force interlock judges readings from this fraction of ``max_pressure_bar`` up: a
-#: monitor reading low hides over-pressure only near the limit (one reading 0.8 of the pressure
-#: hides it from 0.8 of the limit), and one that reads less than half the pressure its
-#: regulator holds (frozen near 0 bar) is the follow and stuck-monitor interlocks'; below it a
-#: load cell's zero drifting beyond its data sheet is no over-pressure
-OVERFORCE_FROM_FRACTION = 0.5
 #: a load cell whose input holds one ADC code this long [s] of sample time, where its tare
 #: strayed more than a step, is stuck or disconnected: no live cell's noise stays on one code
 #: (twenty readings at 10 Hz; one step of noise keeps two readings on one code at most a third
@@ -292,7 +289,7 @@ class Acquisition:
             except ReadTimeout as exc:
                 timeouts += 1
                 self.recorder.meta.counters["read_timeouts"] += 1
-                if self.electronic and self.command_bar > 0:
+                if self.electronic and self.pressurised():
                     # pressurised and blind: no interlock can act until a reading comes; a
                     # signal during its vent is held until the vent is out, and added to it
                     try:
@@ -300,7 +297,7 @@ class Acquisition:
                             tripped = self._vent_for(
                                 self.hung_said() or
                                 f"read interlock: no reading within {daq.read_timeout_s:g} s "
-                                f"with {self.command_bar:g} bar commanded at "
+                                f"with {self.held_said()} at "
                                 f"{self.next_index / self.rate_hz:g} s ({exc})",
                                 RunStatus.FAILED)
                     except StopSignal as sig:
@@ -732,13 +729,14 @@ class Acquisition:
         the reading taken its accuracy high, plus the identified friction (which a falling
         pressure leaves in the force), but no more than the ceiling at the highest reading
         since the muscle was last vented, also taken its accuracy high (the braid holds a force
-        at most at what that peak pulled up; creep and a yielding frame only take force off).
+        at most at what that peak pulled up; creep and a yielding frame only take force off),
+        times ``1 + safety.overforce_margin_fraction`` (:meth:`ForceCeiling.most_N`).
         Only with an electronic regulator, after the tare (forces before it are from the
         configured zero), under a pressure commanded, at a reading from
-        :data:`OVERFORCE_FROM_FRACTION` of ``max_pressure_bar`` up, and not within
-        ``safety.pressure_follow_s`` of a command that fell: a muscle exhausts through its tube
-        behind the regulator's sensor, and holds more than the reading meanwhile (on a rise it
-        lags below it, which only lowers the force)."""
+        :data:`~mkm.bench.preflight.OVERFORCE_FROM_FRACTION` of ``max_pressure_bar`` up, and
+        not within ``safety.pressure_follow_s`` of a command that fell: a muscle exhausts
+        through its tube behind the regulator's sensor, and holds more than the reading
+        meanwhile (on a rise it lags below it, which only lowers the force)."""
         ceiling = self.ceiling
         if ceiling is None or not self.electronic:
             return None
@@ -759,20 +757,7 @@ class Acquisition:
         measured = reading + self.monitor_low_bar
         if measured < OVERFORCE_FROM_FRACTION * self.config.regulator.max_pressure_bar:
             return None
-        offset_bar, gain = self.config.regulator.reading_bounds()
-        high_bar = measured + offset_bar + gain * measured
-        friction = ceiling.friction_fraction
-        most = (1.0 + friction) * float(np.interp(high_bar, ceiling.pressure_bar,
-                                                  ceiling.force_N))
-        where = (f"at {high_bar:.3f} bar, the reading at its accuracy, with its 95 % band and "
-                 f"{100 * friction:.3g} % for the braid's friction")
-        peak = self._peak_bar + self.monitor_low_bar
-        peak_bar = peak + offset_bar + gain * peak
-        rise = float(np.interp(peak_bar, ceiling.pressure_bar, ceiling.force_N))
-        if rise < most:
-            most, where = rise, (f"at {peak_bar:.3f} bar, the highest reading since the vent "
-                                 "at its accuracy, with its 95 % band: the braid holds no more "
-                                 "than that pressure pulled")
+        most, where = ceiling.most_N(self.config, measured, self._peak_bar + self.monitor_low_bar)
         cell = self.cell
         accuracy_N = (ZERO_NOISE_SIGMAS * self.tare_std_V * cell.sensitivity_N_per_V
                       + 2 * self.step_N
@@ -846,6 +831,24 @@ class Acquisition:
         self.tare_offset_V, self.tare_std_V = offset_V, std_V
         self._tared = True
         self._bounds()  # built before any pressure, not in the rise they judge
+
+    def pressurised(self) -> bool:
+        """Whether the muscle may hold pressure: a pressure commanded, or, whatever the
+        command, the last plausible reading above ``safety.vent_below_bar`` (a vent the
+        regulator has not exhausted yet, or does not follow). The read interlock and the
+        run's watchdog watch a blind run by it: what is measured, not only what is
+        commanded."""
+        return self.command_bar > 0 or self.measured_bar > self.config.safety.vent_below_bar
+
+    def held_said(self) -> str:
+        """The pressure :meth:`pressurised` found, in words: the command, and the last reading
+        where it is above the vent threshold and the command by more than
+        ``safety.pressure_tolerance_bar`` (one at its command says nothing more)."""
+        safety = self.config.safety
+        read = (f" and {self.measured_bar:.3f} bar last read"
+                if self.measured_bar > max(safety.vent_below_bar, self.command_bar
+                                           + safety.pressure_tolerance_bar) else "")
+        return f"{self.command_bar:g} bar commanded{read}"
 
     def hung_said(self) -> str:
         """Why the read hung and what the watchdog's vent did, or ""."""

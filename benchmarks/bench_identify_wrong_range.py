@@ -48,7 +48,10 @@ identify printed a misfit line or a warning about the instruments (a creep it ca
 the load cell's gain), ``SILENT`` when some miss without either, ``refused`` or ``crashed`` as
 there; ``misfit_line`` and ``instrument_warning`` say whether each was printed at all, and
 ``frame_check`` the model sweeps the frame check made on a misfit (one per run: of the
-surrogate where the fit searched with it, else of the FE model).
+surrogate where the fit searched with it, else of the FE model), ``braid_refit_sweeps`` and
+``braid_refit_seconds`` the sweeps and seconds of the refits without a creep over before the
+holds start with each braid (one sweep per run and evaluation, up to 7 evaluations
+per braid; 0 where none ran).
 Prints one row per draw and the counts per departure; ``--out`` writes them (``rows``: one per
 draw, with what its verdict names first; ``summary``: per departure), every draw's
 parameters, notes and verdict line, the seeds and provenance.
@@ -85,7 +88,8 @@ DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubi
 DEFAULT_DEPARTURES = DEPARTURES[:3]
 #: the fields of a draw's printed line
 COLUMNS = ("seed", "departure", "value", "truth", "verdict", "chi2_per_nu", "misfit_line",
-           "instrument_warning", "missed", "far", "seconds", "message")
+           "instrument_warning", "missed", "far", "seconds", "braid_refit_sweeps",
+           "braid_refit_seconds", "message")
 
 
 def depart(muscle: dict, departure: str) -> dict:
@@ -189,7 +193,8 @@ def one(muscle: dict, out: Path) -> dict:
            "value": departure_value(muscle), "truth": truth_text(muscle), "muscle": muscle,
            "plan": declared, "verdict": None, "chi2_per_nu": None, "missed": [], "far": [],
            "misfit_line": None, "instrument_warning": None, "message": None, "notes": [],
-           "parameters": [], "seconds": None}
+           "parameters": [], "seconds": None, "braid_refit_sweeps": 0,
+           "braid_refit_seconds": 0.0}
     try:
         runs = acquire_blind(muscle, declared, out)
     except Exception as exc:  # the simulator's FE or the bench: no runs, no identification
@@ -204,8 +209,19 @@ def one(muscle: dict, out: Path) -> dict:
              "rubber_scale": equivalent_scale(muscle, simulated)}
     judged(row, result, muscle, truth, seconds,
            verdict_line=result.summary().splitlines()[-1],
-           frame_check=result.goodness.frame_check if result.goodness else None)
+           frame_check=result.goodness.frame_check if result.goodness else None,
+           **braid_refit(result))
     return row
+
+
+def braid_refit(result) -> dict:
+    """What the refits without a creep over before the holds start cost, with each braid: the
+    model sweeps (the other braid's FE sweeps, one per run and evaluation, and the search's
+    source's where it is the model) and their seconds; 0 where there were none (no such creep,
+    or the braid given)."""
+    refits = [w["other_braid"] for w in result.instrument_warnings if "other_braid" in w]
+    return {"braid_refit_sweeps": sum(r["sweeps"] for r in refits),
+            "braid_refit_seconds": round(sum(r["seconds"] for r in refits), 1)}
 
 
 def summarise(rows: list[dict]) -> list[dict]:
@@ -222,7 +238,10 @@ def summarise(rows: list[dict]) -> list[dict]:
                       "instrument_warning": sum(r["instrument_warning"] is not None
                                                 for r in mine),
                       "frame_check_sweeps": sum((r.get("frame_check") or {}).get("sweeps", 0)
-                                                for r in mine)})
+                                                for r in mine),
+                      "braid_refit_sweeps": sum(r.get("braid_refit_sweeps", 0) for r in mine),
+                      "braid_refit_seconds": round(sum(r.get("braid_refit_seconds", 0.0)
+                                                       for r in mine), 1)})
     return table
 
 
@@ -237,6 +256,8 @@ def table(rows: list[dict]) -> list[dict]:
              "instrument_warning": "yes" if r["instrument_warning"] else "no",
              "verdict_first": first_said(r.get("verdict_line")),
              "frame_check": frame_check_said(r.get("frame_check")),
+             "braid_refit_sweeps": r.get("braid_refit_sweeps", 0),
+             "braid_refit_seconds": r.get("braid_refit_seconds", 0.0),
              "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
 
 

@@ -28,10 +28,9 @@ import numpy as np
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
-from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.bench.sim_settings import remove_simulator_settings, sim_of
 from mkm.core.records import jsonable, provenance
 from mkm.fem.calibration import Calibration
-from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
 from mkm.identify.band import force_ceiling
 
@@ -45,13 +44,7 @@ def draw(rng) -> dict:
 
 
 def config(truth: dict, eps: float, seed: int, **instruments):
-    scale = truth["rubber_scale"]
-    return load_config(eps=eps).replace(sim={
-        "model": "thickwall", "seed": seed,
-        "hysteresis_fraction": truth["hysteresis_fraction"],
-        "creep_fraction": truth["creep_fraction"],
-        "truth": {"theta0_deg": truth["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
-                  "C01_MPa": scale * SILASTIC_S.C01_MPa, **instruments}})
+    return load_config(eps=eps).replace(sim=sim_of(truth, seed, **instruments))
 
 
 def one(truth: dict, rng, out: Path, k: int) -> dict:

@@ -102,7 +102,7 @@ def register(subparsers) -> None:
                          "load cell may read at each measured pressure, so that a pressure "
                          "monitor reading low (its regulator then delivers more than it reads, "
                          "unseen by the over-pressure limit) stops the run, vented (default: "
-                         "no such bound)")
+                         "the config's safety.calibration, else no such bound)")
     acquire.set_defaults(func=_acquire)
 
     tare = subparsers.add_parser(
@@ -148,6 +148,11 @@ def register(subparsers) -> None:
                        help=shared_help("--eps", "default: the config's"))
     check.add_argument("--pressures",
                        help=shared_help("--pressures", "default: the config's"))
+    check.add_argument("--calibration", metavar="FILE",
+                       help="the calibration.json of `mkm identify` for this muscle: print the "
+                       "force the over-force interlock holds each step to, and refuse a plan "
+                       "whose top step the muscle must pull past the force interlock at "
+                       "(default: the config's safety.calibration)")
     check.set_defaults(func=_check, written_files={"example": ".toml"})
 
     vent = subparsers.add_parser(
@@ -234,13 +239,7 @@ def _acquire(args) -> int:
 
     config = _config(args, eps=args.eps, pressures_bar=_staircase(args))
     check_out_root(args.out)  # bad --out: one line, exit 2, before the device is opened
-    ceiling = None
-    if args.calibration is not None:
-        from mkm.fem.calibration import Calibration
-        from mkm.identify.band import force_ceiling
-
-        ceiling = force_ceiling(Calibration.load(args.calibration), config.muscle,
-                                config.regulator.max_pressure_bar)
+    ceiling = _ceiling(args, config)
     plot = args.plot
     if plot and not has_display():
         say(args, "warning", "--plot needs a display and none is set (DISPLAY and "
@@ -255,6 +254,16 @@ def _acquire(args) -> int:
     return _kept(result.exit_code,
                  lambda: _said(args, result, " SIMULATED" if config.simulated else "",
                                config.muscle.eps))
+
+
+def _ceiling(args, config):
+    """The identified muscle's force ceiling of ``--calibration``, else of the configuration's
+    ``safety.calibration``, or None (no over-force interlock)."""
+    if args.calibration is None and config.safety.calibration is None:
+        return None
+    from mkm.identify.band import config_ceiling  # here: the application's models
+
+    return config_ceiling(config, args.calibration)
 
 
 def _kept(code: int, report) -> int:
@@ -361,15 +370,16 @@ def _check(args) -> int:
             "backend, the load cell's sensitivity, the regulator and the limits")
         return 0
     config = _config(args, eps=args.eps, pressures_bar=_staircase(args))
+    ceiling = _ceiling(args, config)
     try:
-        text, warnings, refusal = check(config)
+        text, warnings, refusal = check(config, ceiling=ceiling)
     except BenchError as exc:
         return _failed(args, exc)
     print(text)
     for warning in warnings:  # once, on stderr only
         say(args, "warning", warning)
     if refusal:  # the last line: what stops the run, not "ready"
-        say(args, "error", f"{refusal}; `mkm acquire` would stop at its tare: fix this first")
+        say(args, "error", f"{refusal}: fix this first")
         return EXIT_FAILED
     # the last line a newcomer reads: what was checked and what to do next
     what = ("the simulated device answered (no hardware driven)" if config.simulated

@@ -27,6 +27,10 @@ EXPORT_EXAMPLE = "example: mkm export mkm-out/demo/runs/<run> --format xlsx --ou
 
 #: when the muscle's id and size are needed: only mkm export's workbook records them
 EXPORTED = "required unless the table is a workbook written by mkm export, which holds it"
+#: ... and its size and state, which a file's header may declare
+DECLARED_ABOVE = (f"{EXPORTED}, or the file declares it above its header (L0 = 300 mm, "
+                  "Contraction: 5 %%) or in a TDMS property; one that contradicts the file is "
+                  "refused")
 #: the braid angle and rubber a lab declares: recorded with each run
 DECLARED = ("as the lab declares it, recorded with each run: mkm identify's nominal muscle{} "
             "and the report's prediction; default: none declared, the models' calibrated one")
@@ -53,15 +57,15 @@ def register(subparsers) -> None:
     imp.add_argument("table", nargs="+", action=derived_help(_table_help))
     imp.add_argument("--id", help=f"the muscle's id, naming the run folders ({EXPORTED})")
     imp.add_argument("--D0", type=argtype(parse_number, "--D0", "mm"),
-                     help=shared_help("--D0", EXPORTED))
+                     help=shared_help("--D0", DECLARED_ABOVE))
     imp.add_argument("--t0", type=argtype(parse_number, "--t0", "mm"),
-                     help=shared_help("--t0", EXPORTED))
+                     help=shared_help("--t0", DECLARED_ABOVE))
     imp.add_argument("--L0", type=argtype(parse_number, "--L0", "mm"),
                      help=shared_help("--L0", "default: the table's L0 column; without one, "
-                                      f"{EXPORTED}"))
+                                      f"{DECLARED_ABOVE}"))
     imp.add_argument("--eps", type=argtype(parse_fraction),
                      help=shared_help("--eps", "default: the table's eps or length column; "
-                                      f"without either, {EXPORTED}"))
+                                      f"without either, {DECLARED_ABOVE}"))
     for option, name, unit in (("--theta0", "theta0_deg", "DEG"), ("--C10", "C10_MPa", "MPA"),
                                ("--C01", "C01_MPa", "MPA")):
         imp.add_argument(option, dest=name, metavar=unit,

@@ -152,22 +152,44 @@ CEILING_STEP_BAR = 0.05
 CEILING_TOP = 1.5
 
 
-def force_ceiling(calibration, muscle, max_pressure_bar: float):
+def config_ceiling(config, calibration_file=None):
+    """The :class:`mkm.bench.preflight.ForceCeiling` a run of the bench configuration
+    ``config`` is held to (:func:`force_ceiling`): of ``calibration_file`` (``mkm acquire
+    --calibration``, ``mkm check --calibration``), else of the configuration's
+    ``safety.calibration``; None when neither names one. Its errors name the one given."""
+    from mkm.fem.calibration import Calibration
+
+    if calibration_file is not None:
+        path, given = calibration_file, "--calibration"
+    elif config.calibration_path is not None:
+        path, given = config.calibration_path, f"config {config.source}: safety.calibration"
+    else:
+        return None
+    try:
+        calibration = Calibration.load(path)
+    except ValueError as exc:
+        raise ValueError(str(exc) if calibration_file is not None else f"{given}: {exc}") \
+            from None
+    return force_ceiling(calibration, config.muscle, config.regulator.max_pressure_bar, given)
+
+
+def force_ceiling(calibration, muscle, max_pressure_bar: float, given: str = "--calibration"):
     """The most the muscle ``calibration`` identified (the calibration.json ``mkm identify``
     writes) pulls at ``muscle``'s eps, at pressures up to :data:`CEILING_TOP` x
     ``max_pressure_bar`` [bar]: its identified static force plus the 95 % band
     (:func:`prediction_band`), with the upper end of its friction's interval (the bench's
     :data:`mkm.bench.preflight.FRICTION_FRACTION` where identify fitted none): the
     :class:`mkm.bench.preflight.ForceCeiling` that arms ``mkm acquire``'s over-force
-    interlock. ``ValueError`` in one line for a calibration that holds no identified muscle, or
-    one identified on another tube or rest length than ``muscle`` (a
+    interlock, with the least it pulls (the static force less the band). ``ValueError`` in one
+    line, naming the file as ``given`` names it, for a calibration that holds no identified
+    muscle, or one identified on another tube or rest length than ``muscle`` (a
     :class:`mkm.fem.muscle.Muscle`) declares."""
     from mkm.bench.preflight import FRICTION_FRACTION, ForceCeiling
     from mkm.registry import parse_spec
 
     found = identified_entry(calibration)
     if found is None or "band" not in found[1]["identified"]:
-        raise ValueError(f"--calibration {calibration.path} holds no muscle mkm identify "
+        raise ValueError(f"{given} {calibration.path} holds no muscle mkm identify "
                          "identified with its prediction band: expected the calibration.json "
                          "of `mkm identify RUNS --out DIR` for this muscle")
     key, entry = found
@@ -184,7 +206,7 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float):
     if muscles and all(other(m) for m in muscles):
         differ = other(muscles[0])
         raise ValueError(
-            f"--calibration {calibration.path} identified a muscle of "
+            f"{given} {calibration.path} identified a muscle of "
             + ", ".join(f"{name}={muscles[0][name]:g}" for name in differ)
             + "; the configuration declares "
             + ", ".join(f"{name}={getattr(muscle, name):g}" for name in differ)
@@ -203,16 +225,19 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float):
     band = prediction_band(spec, calibration, force, pressure_bar, tube[0], tube[1],
                            muscle.eps)
     if band is None:
-        raise ValueError(f"--calibration {calibration.path}: no prediction band for its "
+        raise ValueError(f"{given} {calibration.path}: no prediction band for its "
                          f"identified model {key}")
     friction = next((p["value"] if p.get("ci_high") is None else p["ci_high"]
                      for p in record.get("parameters", [])
                      if p.get("parameter") == "hysteresis_fraction"
                      and p.get("value") is not None), None)
-    # where the model gives no valid force (past its lock) nothing bounds the force
-    most = np.where(np.asarray(predicted.valid, dtype=bool) & np.isfinite(force + band),
-                    np.maximum(force, 0.0) + band, np.inf)
+    # where the model gives no valid force (past its lock) nothing bounds the force, and it
+    # pulls none for sure
+    known = np.asarray(predicted.valid, dtype=bool) & np.isfinite(force + band)
+    most = np.where(known, np.maximum(force, 0.0) + band, np.inf)
+    least = np.where(known, np.maximum(force - band, 0.0), 0.0)
     return ForceCeiling(tuple(map(float, pressure_bar)), tuple(map(float, most)),
+                        tuple(map(float, least)),
                         float(FRICTION_FRACTION if friction is None else friction),
                         f"the muscle identified in {calibration.path} ({key})")
 

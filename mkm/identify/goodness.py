@@ -28,6 +28,10 @@ the intervals are at least as wide as the misfit says the model's errors are. It
 widening, not a model of the discrepancy: a systematic error (a monitor offset, a braid the
 model does not have) biases the estimate as well, which the warning line says.
 
+A step table without a declared accuracy has one value per step; where its sweeps repeat its
+pressures, the scatter of the repeats' residuals is its noise (:func:`repeat_noise`), estimated,
+so its branches are judged by an F test (:func:`_from_repeats`).
+
 The bench's instrument tolerances (the load cell's gain, the monitor's accuracy) are not noise
 here: they are errors the data share, and a fit that cannot absorb them shows them as misfit.
 """
@@ -40,6 +44,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy import optimize, stats
 
+from mkm.bench.series import PLATEAU_TOLERANCE_BAR
 from mkm.fem.calibration import THRESHOLD_FLOOR_FRACTION, line_above_threshold
 from mkm.fem.thickwall import klute_hannaford_threshold_pressure
 from mkm.identify import fitting
@@ -77,6 +82,9 @@ class Branch:
     #: each step's mean residual and its noise [N] (the discrepancy's estimate takes them)
     residual_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
     noise_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
+    #: where the noise was estimated (a table's repeats): the chi-square of ``nu`` degrees of
+    #: freedom as probable as ``p_value``, which all branches' p-value adds; None: ``chi2``
+    p_chi2: float | None = None
 
     @property
     def reduced(self) -> float:
@@ -122,6 +130,8 @@ class Goodness:
     #: at the shorter held length, and how many sweeps (one per run); the stiffness it fits and
     #: how far it and a rest length lower chi2, named or not
     frame_check: dict | None = None
+    #: the step tables judged against the scatter of their repeats (no accuracy declared)
+    repeats: list[Repeats] = field(default_factory=list)
 
     @property
     def reduced(self) -> float:
@@ -130,7 +140,8 @@ class Goodness:
     @property
     def p_value(self) -> float:
         """P(chi2 of all steps >= observed | the noise alone)."""
-        return float(stats.chi2.sf(self.chi2, self.nu)) if self.nu > 0 else math.nan
+        total = sum(b.chi2 if b.p_chi2 is None else b.p_chi2 for b in self.branches)
+        return float(stats.chi2.sf(total, self.nu)) if self.nu > 0 else math.nan
 
     @property
     def misfit(self) -> list[Branch]:
@@ -263,6 +274,14 @@ class Goodness:
                 **({"frame": {k: v for k, v in self.frame.items() if k not in ("said", "shift")}}
                    if self.frame else {}),
                 **({"frame_check": self.frame_check} if self.frame_check else {}),
+                **({"noise_from_repeats": [r.record() for r in self.repeats],
+                    "repeats_method": "a step table without a declared accuracy: one step's "
+                                      "noise the pooled standard deviation of the residuals "
+                                      "of its steps repeated on one branch within "
+                                      f"{REPEAT_BAND_BAR:g} bar, judged by an F test of the "
+                                      "repeats' means against it (at least "
+                                      f"{REPEAT_MIN_DOF} degrees of freedom)"}
+                   if self.repeats else {}),
                 "branches": [b.record() for b in self.branches]}
 
 
@@ -313,13 +332,22 @@ def assess(runs, fit) -> Goodness:
                           minlength=n_steps)
     scatter2 = squares / np.maximum(counts - 1, 1) / np.maximum(counts, 1)
     measured = np.bincount(fit.cluster, fit.measured_N, minlength=n_steps) / np.maximum(counts, 1)
-    branches, offset, left_out, slack = [], 0, [], []
+    branches, offset, left_out, slack, repeats, too_few = [], 0, [], [], [], []
     zero_N = fit.values.get("force_zero_N", 0.0)
     for k, run in enumerate(runs):
         steps = run.steps.reset_index(drop=True)
         here = slice(offset, offset + len(steps))
         offset += len(steps)
         noise, usable = _step_noise(run, steps, scatter2[here], counts[here])
+        repeated = None
+        if noise is None and not run.timed and not run.binned:  # a step table's repeats
+            found = repeat_noise(run.name, steps, mean[here], counts[here] > 0)
+            if found.dof >= REPEAT_MIN_DOF:
+                repeated, usable = found, counts[here] > 0
+                noise = np.full(len(steps), found.noise_N)
+                repeats.append(found)
+            else:
+                too_few.append(found)
         if noise is None:
             left_out.append(run.name)
             continue
@@ -339,21 +367,104 @@ def assess(runs, fit) -> Goodness:
                 continue
             r, s = mean[here][pick], noise[pick]
             s = np.maximum(s, 1e-12)
-            chi2 = chi_square(r, s, tare)
-            nu = float(pick.sum())
+            if repeated is None:
+                chi2, nu = chi_square(r, s, tare), float(pick.sum())
+                p, p_chi2 = float(stats.chi2.sf(chi2, nu)), None
+            else:
+                chi2, nu, p, p_chi2 = _from_repeats(mean[here], repeated, [
+                    g for g in repeat_groups(steps, usable)
+                    if steps["direction"].iloc[int(g[0])] == direction], tare)
             order = np.argsort(steps["pressure_bar_mean"].to_numpy()[pick], kind="stable")
             n_runs, runs_p = runs_test(r[order])
             branches.append(Branch(
-                run.name, branch, int(pick.sum()), chi2, nu,
-                float(stats.chi2.sf(chi2, nu)) if nu > 0 else math.nan, n_runs, runs_p,
-                float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2))), r,
-                np.hypot(s, tare)))
+                run.name, branch, int(pick.sum()), chi2, nu, p if nu > 0 else math.nan,
+                n_runs, runs_p, float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2))),
+                r, np.hypot(s, tare), p_chi2))
     if not branches:
-        return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE, left_out=left_out)
+        return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE + "".join(
+            "; too few repeats in a table to judge it by: "
+            f"{'; '.join(f.too_few() for f in too_few)}; {REPEAT_MIN_DOF} needed"
+            for _ in too_few[:1]), left_out=left_out)
     chi2 = sum(b.chi2 for b in branches)
     nu = sum(b.nu for b in branches)
     return Goodness(branches, chi2, nu, left_out=left_out, fitted=tuple(fit.names),
-                    shown=shown_effects(runs), slack=slack)
+                    shown=shown_effects(runs), slack=slack, repeats=repeats)
+
+
+#: a step table's steps of one branch whose pressures lie within a staircase's plateau band
+#: of the lowest of them are repeats of one step (:data:`mkm.bench.series.PLATEAU_TOLERANCE_BAR`)
+REPEAT_BAND_BAR = PLATEAU_TOLERANCE_BAR
+#: the fewest degrees of freedom of the repeats' scatter that judge a table without a declared
+#: accuracy: the scatter's own standard error is then at most 22 % (1 / sqrt(2 * 10)), and the
+#: judgement takes the scatter's uncertainty in (an F test, :func:`_from_repeats`)
+REPEAT_MIN_DOF = 10
+
+
+@dataclass
+class Repeats:
+    """A step table's noise judged from its repeats (:func:`repeat_noise`)."""
+
+    run: str
+    noise_N: float  # one step's: the pooled standard deviation of the repeats' residuals
+    dof: int  # its degrees of freedom: the repeats less one per repeated step
+    steps: int  # the steps that repeat another
+    pressures: int  # the branch and pressure pairs repeated
+
+    def record(self) -> dict:
+        return {"run": self.run, "noise_N": round(self.noise_N, 4), "dof": self.dof,
+                "steps": self.steps, "repeated_pressures": self.pressures}
+
+    def said(self) -> str:
+        return (f"run {self.run}: {self.noise_N:.3g} N from {self.steps} steps repeated at "
+                f"{self.pressures} pressures, {self.dof} degrees of freedom")
+
+    def too_few(self) -> str:
+        return (f"run {self.run}: {self.dof} degrees of freedom ({self.steps} steps repeated at "
+                f"{self.pressures} pressures)")
+
+
+def repeat_groups(steps, usable: np.ndarray) -> list[np.ndarray]:
+    """The usable steps of ``steps`` grouped as repeats: per branch, in pressure order, a group
+    holding the steps within :data:`REPEAT_BAND_BAR` of its lowest pressure."""
+    groups = []
+    pressure = steps["pressure_bar_mean"].to_numpy(dtype=float)
+    for direction in BRANCHES:
+        pick = np.flatnonzero((steps["direction"].to_numpy() == direction) & usable)
+        order = pick[np.argsort(pressure[pick], kind="stable")]
+        start = 0
+        for k in range(1, order.size + 1):
+            if k == order.size or pressure[order[k]] - pressure[order[start]] > REPEAT_BAND_BAR:
+                groups.append(order[start:k])
+                start = k
+    return groups
+
+
+def repeat_noise(name: str, steps, residual: np.ndarray, usable: np.ndarray) -> Repeats:
+    """The noise of one step of a step table without a declared accuracy, from its repeats: the
+    pooled standard deviation of the steps' mean residuals about their repeats' mean (model
+    minus measured: the model takes up the repeats' pressures' differences, and a misfit the
+    repeats share cancels), each branch and pressure apart (:func:`repeat_groups`)."""
+    groups = [g for g in repeat_groups(steps, usable) if g.size > 1]
+    dof = sum(g.size - 1 for g in groups)
+    squares = sum(float(np.sum((residual[g] - residual[g].mean()) ** 2)) for g in groups)
+    return Repeats(name, math.sqrt(squares / dof) if dof else math.nan, dof,
+                   sum(g.size for g in groups), len(groups))
+
+
+def _from_repeats(residual, repeats: Repeats, groups, tare: float):
+    """A branch's chi-square, degrees of freedom, p-value and the chi-square as probable, judged
+    against a noise its repeats measured: the groups' mean residuals against the repeats' noise
+    over root n (and the tare every step shares), a chi-square over the groups' number ``G``
+    that is ``G`` F(G, dof) distributed where the model fits (the noise estimated, not known).
+    The chi-square itself measures the misfit (the Birge ratio widens by it); its p-value is
+    the F test's, and the chi-square of ``G`` degrees of freedom as probable is what all
+    branches' p-value adds."""
+    means = np.array([residual[g].mean() for g in groups])
+    spread = max(repeats.noise_N, 1e-12) / np.sqrt([g.size for g in groups])
+    chi2, n = chi_square(means, spread, tare), len(groups)
+    p = float(stats.f.sf(chi2 / n, n, repeats.dof))
+    # beyond the F tail's floating point the chi-square itself, larger still
+    return chi2, float(n), p, (float(stats.chi2.isf(p, n)) if p > 0 else chi2)
 
 
 #: what runs show that a fit may leave out, by the ``--params`` group that fits it

@@ -32,6 +32,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
+import shlex
 import time
 import warnings
 
@@ -70,6 +71,8 @@ RATIO_WIDTH = 0.25
 RATIO_CONDITION = 1e8
 #: a rejected ratio also lowers chi2 by this much when freed (95 % of chi2 with one degree)
 RATIO_LIKELIHOOD = float(chi2.ppf(0.95, 1))
+#: the step of C01's share the FE model's column for it is differenced over (:func:`fe_ratio_test`)
+RATIO_STEP = 0.05
 #: the 95 % half-width above which an interval is wide (the issue's targets: theta0 within
 #: 0.3 deg, the rubber within 10 %, friction within one point, the wall within 0.1 mm; the
 #: rest length within 1 mm, a shortening of 0.4 % of a 250 mm muscle)
@@ -484,6 +487,16 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                          f"{said} ratio {assumed:.3g} assumed; the C10 and "
                          "C01 written are that assumption's (the stiffness the runs fix, "
                          f"not two measured constants){_declared_holds_ratio(rubber)}")
+    if "rubber_scale" in best.names and _box_cut_the_ratio(rubber):
+        notify(f"the surrogate's box cut the test of C10 and C01: would {fe.name} separate them? "
+               "(two or three sweeps per run)")
+        try:
+            rubber["fe_ratio_test"] = fe_ratio_test(source, fe, runs, best, braid)
+        except RuntimeError as exc:  # no FE force at the ratio stepped to: nothing to advise
+            rubber["fe_ratio_test"] = {"skipped": str(exc), "separates": False}
+        if rubber["fe_ratio_test"]["separates"]:
+            notes.append(search_model_note(rubber["fe_ratio_test"], runs, command_options(
+                groups, fe.name, "model", None)))
     if "rubber_scale" in best.names and not rubber["separated"]:
         notify("the assumed rubber ratio: refits at the ends of what the runs allow")
         with warnings.catch_warnings(record=True) as caught:
@@ -541,9 +554,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         notes.append(f"{', '.join(boot['stretched'])}: the bootstrap's 95 % range left the "
                      "estimate out (its replicates step as if a parameter resting on a bound "
                      "were free): the interval is stretched to hold it; read it as approximate")
-    if best.at_edge:
-        notes.append(f"{', '.join(best.at_edge)} at the edge of the search box: the interval "
-                     "is cut there")
+    notes += [edge_note(name, best, source) for name in best.at_edge]
     notes += terms_at_bounds(runs, best)
     cautions += [lag] if lag else []
     notes += [c["said"] for c in cautions]
@@ -647,11 +658,16 @@ def creep_at_floor(runs, best, boot) -> bool:
 
 def _without_creep(source, fe: ModelStatic, runs, best) -> dict:
     """The creep dropped with the braid fitted and with the other one
-    (:func:`without_creep`): the braids' names and the rise of chi2 with each."""
+    (:func:`without_creep`): the braids' names and the rise of chi2 with each, and what the
+    refits cost: the model sweeps they made (one per run and evaluation; the fitted braid's
+    are the search's source's, none where that is a surrogate) and their seconds."""
     other = _other_braid(fe)
-    return {"braid": _braid_of(other), "fitted_braid": _braid_of(fe),
-            "chi2_rise": without_creep(source, fe, runs, best, other),
-            "fitted_braid_chi2_rise": without_creep(source, fe, runs, best, fe)}
+    started, fe_calls = time.perf_counter(), fe.calls
+    rises = {"braid": _braid_of(other), "fitted_braid": _braid_of(fe),
+             "chi2_rise": without_creep(source, fe, runs, best, other),
+             "fitted_braid_chi2_rise": without_creep(source, fe, runs, best, fe)}
+    return {**rises, "sweeps": other.calls + fe.calls - fe_calls,
+            "seconds": round(time.perf_counter() - started, 3)}
 
 
 def creep_or_gain(runs, best, boot, other_braid: dict | None = None) -> dict:
@@ -895,6 +911,50 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
 
 def _rms(r) -> float:
     return float(np.sqrt(np.mean(np.square(r))))
+
+
+#: a rubber at an edge of its search, per edge: how it is said, the practical range's end, and
+#: what makes a muscle pull so: its wall, its pressures and its load cell read one way
+RUBBER_EDGE = {
+    "low": ("softer", "softest", "a wall thinner than declared pulls as a softer rubber",
+            "read low, as in MPa taken for bar, or a monitor off its zero: the muscle pulls at "
+            "each as at a higher one", "a cell reading high"),
+    "high": ("stiffer", "stiffest", "a wall thicker than declared pulls as a stiffer rubber",
+             "read high, as in kPa or psi taken for bar, or a monitor off its zero: the muscle "
+             "pulls at each as at a lower one", "a cell reading low")}
+
+
+def edge_note(name: str, best, source) -> str:
+    """The note on ``name`` fitted at an edge of its search box (``best.bounds``): which edge,
+    what the runs then say and what to check; for a box other than the FE model's (the
+    surrogate's, on which a corrected fit ended), that ``--search model`` searches beyond
+    it."""
+    value = best.values[name]
+    low, high = best.bounds[name]
+    edge = "low" if value - low <= high - value else "high"
+    said = (f"{name} {value:.4g} is at the {edge} edge of its search box ({low:.4g} to "
+            f"{high:.4g}): the interval is cut there")
+    surrogate = source.box is not fitting.FE_BOX
+    if name == "rubber_scale":
+        rubber, end, wall, pressures, cell = RUBBER_EDGE[edge]
+        said += (f"; these runs pull as a rubber {rubber} than any searched (C10 "
+                 f"{fitting.rubber(best.values)[0]:.3g} MPa at "
+                 f"{fitting.assumed_ratio(best.values)[1]} ratio; the practical range's "
+                 f"{end} C10 is {PRACTICAL_RANGE.C10_MPa[0 if edge == 'low' else 1]:g} MPa): "
+                 f"check the wall's declared thickness ({wall}), the pressures ({pressures}) "
+                 f"and the load cell's gain ({cell})")
+    elif name == "theta0_deg" and not surrogate:
+        said += (f"; a braid angle of {value:.3g} deg is not a muscle of this family: check "
+                 "the declared diameter and wall and the units of force and pressure")
+    elif name in fitting.GEOMETRY_FACTORS and not surrogate:
+        factor = fitting.GEOMETRY_FACTORS[name][0 if edge == "low" else 1]
+        said += f"; {factor:g} times the declared value: the declaration is far off, measure it"
+    else:
+        said += "; check the declared geometry and the units of force and pressure"
+    if surrogate:
+        said += (f"; the box is the surrogate's ({source.name}): --search model searches with "
+                 "the FE model beyond it")
+    return said
 
 
 def ratio_edge_note(ratio: float, share: float, bounds: tuple[float, float],
@@ -1357,6 +1417,72 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                                 f"its own); excluding it is not enough while the braid "
                                 f"is in doubt and the other braid at it lowers chi2 as "
                                 f"far, within {RATIO_LIKELIHOOD:.2f}"}, terms, source
+
+
+def _box_cut_the_ratio(rubber: dict) -> bool:
+    """Whether the runs were left not separating C10 and C01 because the surrogate's box cut
+    the test of their ratio (C01's share stopped at it, had no room in it, or its interval was
+    cut there), not by the runs."""
+    return not rubber["separated"] and bool(
+        rubber.get("box_stopped") or rubber.get("ratio_box_cut")
+        or rubber.get("why", "").startswith("C01's share has no room in the search box"))
+
+
+def search_model_note(test: dict, runs, options) -> str:
+    """The note where the FE model may separate C10 and C01 that the surrogate's box left
+    together (:func:`fe_ratio_test`), with the command that tests it."""
+    low, high = test["ratio_ci"]
+    paths = " ".join(shlex.quote(str(run.path)) for run in runs)
+    return (f"the surrogate's box cut the test of C10 and C01, and the FE model may separate "
+            f"them: its change with the ratio at this optimum puts C01/C10 at "
+            f"{test['ratio']:.3g} (95 % interval {low:.3g}-{high:.3g}, linearised; "
+            f"{test['assumed_from']} {test['assumed']:.3g}); to test it, identify again with the "
+            f"FE model searching (one sweep per run and evaluation): mkm identify {paths} "
+            f"{' '.join(shlex.quote(o) for o in options)}")
+
+
+def fe_ratio_test(source, fe: ModelStatic, runs, best, braid: str | None) -> dict:
+    """What the FE model would make of the rubber's ratio where the search's own test of it was
+    cut by the surrogate: the fit at the assumed ratio (``best``) refitted with C01's share
+    free by one linearised step, the share's column the FE model's (at the optimum and at a
+    share :data:`RATIO_STEP` further: two sweeps per run), its 95 % interval from the Fisher
+    matrix (the residuals' variance their own) widened as the rule's is: by the declared
+    tolerances every run shares (:func:`shared_terms`) and, with the braid in doubt, one-sided
+    by the other braid's refit (a sweep per run more); as C01/C10, and whether that would
+    separate C10 and C01 by the rule's width or by excluding the assumed ratio
+    (``separates``)."""
+    share = fitting.assumed_share(best.values)
+    assumed, said = fitting.assumed_ratio(best.values)
+    step = RATIO_STEP if share + RATIO_STEP < 1.0 else -RATIO_STEP
+    fe_tables = fe.tables(runs, best.values)
+    sweeps = 2 * len(runs)
+    column = best.w * _hold_change(source, runs, best, _minus(
+        fe.tables(runs, {**best.values, "c01_fraction": share + step}), fe_tables)) / step
+    if not np.any(column):  # the runs do not see the ratio at all
+        top = fitting.TERM_BOUNDS["c01_fraction"][1]
+        return {"ratio": assumed, "ratio_ci": [0.0, top / (1.0 - top)], "assumed": assumed,
+                "assumed_from": said, "sweeps": sweeps, "separates": False}
+    J = best.weighted_jacobian
+    J = np.column_stack([J[:, np.sqrt(np.sum(J ** 2, axis=0)) > 0], column])
+    # the share's row of the linearised refit: its change for a change of the residuals
+    refit = np.linalg.pinv(J)[-1]
+    centre = min(max(share - refit @ best.weighted_residual, 0.0), 0.999)
+    variance = best.rss / max(best.n - J.shape[1], 1)
+    half = 1.96 * math.sqrt(variance * np.linalg.pinv(J.T @ J)[-1, -1]) + sum(
+        abs(refit @ (best.w * sensitivity)) * bound
+        for sensitivity, bound in shared_terms(source, runs, best).values())
+    low, high = centre - half, centre + half
+    if braid_skipped(fe, best, braid) is None:
+        shift = -refit @ (best.w * _hold_change(source, runs, best, _minus(
+            _other_braid(fe).tables(runs, best.values), fe_tables)))
+        low, high = min(low, low + shift), max(high, high + shift)
+        sweeps += len(runs)
+    ratio = centre / (1 - centre)
+    low, high = (min(max(v, 0.0), 0.999) / (1 - min(max(v, 0.0), 0.999)) for v in (low, high))
+    narrow = ratio > 0 and (1 - RATIO_WIDTH) * ratio <= low and high <= (1 + RATIO_WIDTH) * ratio
+    return {"ratio": float(ratio), "ratio_ci": [float(low), float(high)], "assumed": assumed,
+            "assumed_from": said, "sweeps": sweeps,
+            "separates": bool(narrow or not low <= assumed <= high)}
 
 
 def ratio_freed(rubber: dict) -> dict | None:

@@ -410,6 +410,9 @@ class Identification:
             declared = [r.name for r in self.runs if r.declared and not r.timed]
             against = ("their noise (the declared accuracy of the imported tables)"
                        if declared else "their own noise")
+            if g.repeats:
+                against += (f"{' and ' if declared else ', '}the scatter of the tables' "
+                            f"repeated steps ({'; '.join(r.said() for r in g.repeats)})")
             lines.append(f"  goodness of fit: chi2/nu = {g.reduced:.3g} over "
                          f"{sum(b.steps for b in g.branches)} settled steps against {against} "
                          f"({'a misfit, see below' if g.misfit else 'within the noise'})"

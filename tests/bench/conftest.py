@@ -211,3 +211,47 @@ def mkm_cli(capsys):
         return code, out, err
 
     return run
+
+
+class RunEvents(list):
+    """The events :func:`run_events` records, in order."""
+
+    def after_the_stop(self, stop: tuple) -> list[tuple]:
+        """What the run did from the stop ``stop`` (an event a test put in) to its first
+        vent write, that write left out; every event when none came."""
+        rest = self[self.index(stop) + 1:]
+        return rest[:rest.index(("AO", 0.0))] if ("AO", 0.0) in rest else rest
+
+
+@pytest.fixture
+def run_events(monkeypatch) -> RunEvents:
+    """What the run's own thread does to the device and to its books, in order, as the run
+    does it: each read (``("read", first sample)``), each AO write (``("AO", volts)``) and each
+    call of its recorder (``("books", name)``: a block queued, a command's or a step's row,
+    run.json marked or finished), appended once the call returned; a test puts in the signal
+    it raises. The recorder's own thread (the rows it writes behind the loop) is left out:
+    "acts first, keeps books after" is the order of the run's loop, which no clock decides."""
+    import threading
+
+    from mkm.bench.recorder import Recorder
+    from mkm.bench.sim import SimBackend
+
+    events = RunEvents()
+    main = threading.main_thread()
+
+    def spy(cls, name, said):
+        original = getattr(cls, name)
+
+        def called(self, *args, **kwargs):
+            out = original(self, *args, **kwargs)
+            if threading.current_thread() is main:
+                events.append(said(out, *args))
+            return out
+
+        monkeypatch.setattr(cls, name, called)
+
+    spy(SimBackend, "read", lambda block, *args: ("read", block.first_index))
+    spy(SimBackend, "write_command", lambda out, volts: ("AO", float(volts)))
+    for name in ("samples", "command", "step", "gap", "tare", "mark", "finish"):
+        spy(Recorder, name, lambda out, *args, name=name: ("books", name))
+    return events

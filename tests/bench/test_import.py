@@ -3058,6 +3058,171 @@ def test_files_whose_headers_declare_one_state_are_joined(tmp_path, mkm_cli):
     assert len(run.meta.imported_from["files"]) == len(files)
 
 
+
+def _lab_sheet(path: Path, eps: float, *header: str) -> Path:
+    """A lab's step table at ``eps`` (the thick-wall model's forces), semicolon separated with
+    decimal commas, under the comment lines ``header``."""
+    rows = [f"{p:.2f};{f:.2f}".replace(".", ",")
+            for p, f in zip(PRESSURES, thickwall_N(PRESSURES, eps), strict=True)]
+    path.write_text("".join(f"# {line}\n" for line in header)
+                    + "Pressure [bar];Force [N]\n" + "\n".join(rows) + "\n")
+    return path
+
+
+LAB_HEADER = ("Muscle test LM-30, operator: KB", "Contraction: 5 %", "L0 = 282 mm",
+              "Inner diameter: 30 mm")
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--D0", "30", "--L0", "282", "--eps", "0.12"],
+     "lm30.csv: --eps 0.12 contradicts the file's 'Contraction: 5 %' (line 2), eps 0.05: "
+     "expected one of them; without --eps the file's is used"),
+    (["--D0", "30", "--L0", "300", "--eps", "0.05"],
+     "lm30.csv: --L0 300 contradicts the file's 'L0 = 282 mm' (line 3), L0 282 mm: expected "
+     "one of them; without --L0 the file's is used"),
+    # the tube's outer diameter given for its inner one
+    (["--D0", "36", "--L0", "282", "--eps", "0.05"],
+     "lm30.csv: --D0 36 contradicts the file's 'Inner diameter: 30 mm' (line 4), D0 30 mm"),
+])
+def test_an_option_that_contradicts_the_files_header_is_refused(argv, message, tmp_path,
+                                                                mkm_cli):
+    # the options were taken and the header's 5 % and 282 mm silently dropped: a run of
+    # another muscle state, which identify then fits
+    path = _lab_sheet(tmp_path / "lm30.csv", 0.05, *LAB_HEADER)
+    code, out, err = mkm_cli(["import", str(path), "--id", "lm30", "--t0", "3", *argv,
+                              "--out", str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"mkm import: error: {message}" in err
+    assert not (tmp_path / "runs").exists()
+
+
+def test_what_a_files_header_declares_is_the_runs_muscle(tmp_path, mkm_cli):
+    # the rest length, the tube and the eps only the comment lines hold: taken, and said
+    path = _lab_sheet(tmp_path / "lm30.csv", 0.05, *LAB_HEADER)
+    (run,), err = _import(mkm_cli, path, "--id", "lm30", "--t0", "3")
+    muscle = run.meta.muscle
+    assert (muscle.L0_mm, muscle.D0_mm, muscle.eps) == (282.0, 30.0, 0.05)
+    assert ("lm30.csv: 7 step(s) (5 rising, 2 falling), one table row each; L0 282 mm from the "
+            "file's 'L0 = 282 mm' (line 3); D0 30 mm from the file's 'Inner diameter: 30 mm' "
+            "(line 4); eps 0.05 from the file's 'Contraction: 5 %' (line 2)") in err
+    assert run.meta.imported_from["declared_in_header"]["eps"] == {
+        "text": "Contraction: 5 %", "at": "line 2", "eps": 0.05, "taken": True}
+    # the thick-wall model at that state scores the table to its forces' rounding (0.005 N of
+    # the 103 N at 0.5 bar)
+    assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
+
+
+@pytest.mark.parametrize("eps", ["5.4%", "0.046"])
+def test_an_option_within_the_headers_rounding_agrees(eps, tmp_path, mkm_cli):
+    # 'Contraction: 5 %' holds 4.5-5.5 %: the option's more digits are taken, nothing said
+    path = _lab_sheet(tmp_path / "lm30.csv", 0.05, *LAB_HEADER)
+    (run,), err = _import(mkm_cli, path, "--id", "lm30", "--t0", "3", "--D0", "30.2",
+                          "--L0", "282.4", "--eps", eps)
+    assert run.meta.muscle.eps == pytest.approx(float(eps.rstrip("%")) / (
+        100 if eps.endswith("%") else 1))
+    assert "from the file's" not in err
+    assert run.meta.imported_from["declared_in_header"]["eps"]["taken"] is False
+
+
+def test_a_tdms_files_properties_declare_its_muscle(tmp_path, mkm_cli):
+    # NI's way to keep what a lab writes above a table's header: the group's and a channel's
+    # properties, read as a text file's comment lines are
+    frame, _, _ = _ramp()
+    path = _tdms(tmp_path / "ramp.tdms", {"Log": {
+        "Time": (frame["t (s)"], {"unit_string": "s"}),
+        "Pressure": (frame["p_psi"], {"unit_string": "psi"}),
+        "Force": (frame["Force (N)"], {"unit_string": "N", "L0_mm": 282.0})}},
+        properties={"": {"name": "LM-30 run 4"}, "Log": {"Contraction [%]": 12.2}})
+    code, out, err = mkm_cli(["import", str(path), *MUSCLE[:-2], "--L0", "300", "--out",
+                              str(tmp_path / "runs")])
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert ("ramp.tdms (group 'Log'): --L0 300 contradicts the file's 'L0_mm: 282' (the "
+            "property 'L0_mm' of channel 'Force'), L0 282 mm") in err
+    (run,), err = _import(mkm_cli, path, *MUSCLE[:-2])
+    assert (run.meta.muscle.L0_mm, run.meta.muscle.eps) == (282.0, pytest.approx(0.122))
+    assert ("eps 0.122 from the file's 'Contraction [%]: 12.2' (the property 'Contraction [%]' "
+            "of its group)") in err
+
+
+
+
+def test_a_workbooks_sheets_each_declaring_their_eps_are_runs_of_their_own(tmp_path, mkm_cli):
+    # a sheet per state, each titled with its contraction and the rest length, no eps column:
+    # each sheet's own (without them the sheets took one --eps, or none was found)
+    import openpyxl
+
+    book = openpyxl.Workbook()
+    book.remove(book.active)
+    for eps in (0.0, 0.1, 0.2):
+        sheet = book.create_sheet(f"Versuch {100 * eps:g}")
+        sheet.append(["Muskel LM-30, Ruhelänge 282 mm"])
+        sheet.append(["Kontraktion [%]", 100 * eps])
+        sheet.append(["Druck [bar]", "Kraft [N]"])
+        for p, f in zip(PRESSURES, thickwall_N(PRESSURES, eps), strict=True):
+            sheet.append([float(p), round(float(f), 2)])
+    book.save(tmp_path / "versuche.xlsx")
+    runs, err = _import(mkm_cli, tmp_path / "versuche.xlsx", "--id", "lm30", "--D0", "30",
+                        "--t0", "3")
+    assert [(r.meta.muscle.eps, r.meta.muscle.L0_mm) for r in runs] == [
+        (0.0, 282.0), (0.1, 282.0), (0.2, 282.0)]
+    assert "eps 0.2 from the file's 'Kontraktion [%] 20' (line 2)" in err
+    # each sheet's forces the thick-wall model's at its own eps, to their rounding
+    assert _scores(tmp_path, runs)["max_abs_err_pct"].max() < 0.01
+
+
+def _rolled_files(folder: Path, clock: str, lost_s: float = 0.0):
+    """A 10 Hz staircase (0.5-1.5-0.5 bar) logged by a logger that rolls its file every 37 s,
+    the join within the 1.5 bar hold (32-44 s): each file's clock restarting at 0
+    (``restart``) or date-times going on (``date``), ``lost_s`` of samples lost at the join;
+    the files and the whole record as one file."""
+    t, p, force, _ = _staircase_10_hz([0.5, 1.0, 1.5, 1.0, 0.5], tare_N=2.0)
+    folder.mkdir()
+    start = datetime.datetime(2026, 12, 5, 14, 5, 0)
+    whole = pd.DataFrame({"Zeit [s]": np.round(t, 1), "Druck [bar]": p, "Kraft [N]": force})
+    whole.to_csv(folder / "whole.csv", index=False)
+    parts = [slice(0, 370), slice(370 + round(10 * lost_s), None)]
+    for k, part in enumerate(parts, start=1):
+        frame = whole.iloc[part].copy()
+        if clock == "restart":
+            frame["Zeit [s]"] = np.round(frame["Zeit [s]"] - frame["Zeit [s]"].iloc[0], 1)
+        else:
+            frame.insert(0, "Date/Time", [(start + datetime.timedelta(seconds=float(s)))
+                                          .isoformat(sep=" ") for s in frame.pop("Zeit [s]")])
+        frame.to_csv(folder / f"log_{k:03d}.csv", index=False)
+    return folder
+
+
+def test_a_file_rolled_mid_hold_is_joined_as_one_hold(tmp_path, mkm_cli):
+    # each file's clock restarts at 0, the second file's first samples the hold the first's
+    # ended in: said as one hold joined, where the line said 'its step taken as the file
+    # begins: each hold's creep timed from its file's start', a file per step's reading
+    folder = _rolled_files(tmp_path / "LM30", "restart")
+    (run,), err = _import(mkm_cli, folder / "log_*.csv", *MUSCLE, "--eps", "0")
+    assert "its step taken as the file begins" not in err
+    assert ("1 of the 1 joins within a hold (the pressure at one level across each, as a logger "
+            "that rolls its file every few minutes writes it: log_002.csv), each joined as one "
+            "hold, any time lost between the files unknown") in err
+    join = run.meta.imported_from["files"][1]["join"]
+    assert join["within_hold_bar"] == pytest.approx(1.5, abs=0.003)  # the gauge's noise
+    # one sample apart, the clock goes on as logged: the steps of the whole record, each
+    (whole,), _ = _import(mkm_cli, folder / "whole.csv", *MUSCLE, "--eps", "0")
+    columns = ["pressure_bar_mean", "force_N_mean", "start_s", "end_s"]
+    np.testing.assert_allclose(run.steps[columns], whole.steps[columns], rtol=1e-9,
+                               atol=1e-6)
+
+
+def test_samples_lost_mid_hold_between_rolled_files_are_named(tmp_path, mkm_cli):
+    # date-times go on from file to file, 4 s lost as the logger opened its second file, in
+    # the middle of the 1.5 bar hold: named (the line said only '0.1-4.1 s' between files)
+    folder = _rolled_files(tmp_path / "LM30", "date", lost_s=4.0)
+    (run,), err = _import(mkm_cli, folder / "log_*.csv", *MUSCLE, "--eps", "0")
+    assert ("log_002.csv begins 4.1 s after log_001.csv's last sample, within the hold at "
+            "1.5 bar: that much of it not logged") in err
+    assert run.meta.imported_from["files"][1]["join"]["gap_s"] == pytest.approx(4.1)
+    # the hold keeps its level on both sides: one step at 1.5 bar, not two
+    assert (np.abs(run.steps["pressure_bar_mean"] - 1.5) < 0.01).sum() == 1
+
+
 def _pre_conditioned(top_hold_s: float, step_holds_s: list[float], seed: int = 5):
     """A 10 Hz record at eps 0 as a bench pre-conditions its muscle: 5 s vented, a cycle to
     2.5 bar held ``top_hold_s`` and vented for 3 s, then a staircase 0.5-2.5-0.5 bar, each

@@ -288,7 +288,7 @@ def test_second_ctrl_c_vents_at_once(config, tmp_path):
     assert run.commands["purpose"].iloc[-1] == "vent" and run.commands["ok"].iloc[-1]
 
 
-def test_first_ctrl_c_stops_at_the_next_block(config, tmp_path):
+def test_first_ctrl_c_stops_at_the_next_block(config, tmp_path, run_events):
     backend = SimBackend(config)
     run = BenchRun(config, backend, tmp_path, handle_signals=False)
     original = backend.read
@@ -296,6 +296,7 @@ def test_first_ctrl_c_stops_at_the_next_block(config, tmp_path):
     def read(n, timeout):
         block = original(n, timeout)
         if block.first_index == 30:
+            run_events.append(("Ctrl-C",))
             run.request_stop()  # what the first SIGINT does
         return block
 
@@ -307,7 +308,10 @@ def test_first_ctrl_c_stops_at_the_next_block(config, tmp_path):
     assert acquired["sample"].iloc[-1] == 30  # the block in hand is kept, no more
     assert loaded.commands["purpose"].iloc[-1] == "vent"
     assert backend.commands[-1][1] == 0.0  # the device's last command is the vent
-    assert loaded.meta["stop_to_vent_s"] < 0.05  # no waiting in between on the virtual clock
+    # nothing between the stop and the vent but the block in hand's books (read before the
+    # Ctrl-C was asked for here): no read, no record; the delay is measured, and wall time
+    assert run_events.after_the_stop(("Ctrl-C",)) == [("books", "samples")]
+    assert loaded.meta["stop_to_vent_s"] >= 0
 
 
 def test_a_signal_while_a_block_is_read_keeps_the_block(config, tmp_path):
@@ -1109,3 +1113,68 @@ def test_vent_keeps_its_exit_status_when_its_output_reader_left(tmp_path):
     proc.stdout.close()
     proc.stderr.close()
     assert proc.wait(timeout=120) == 1
+
+
+PRECONDITIONED = {"sequence": {"preconditioning_cycles": 1, "preconditioning_hold_s": 5.0}}
+
+
+def test_a_read_timeout_while_the_muscle_exhausts_trips_the_read_interlock(config, tmp_path):
+    # pre-conditioning holds 1.0 bar from 2 s and commands 0 bar at 7 s; the muscle exhausts
+    # behind the regulator (0.4 s and 2 bar/s), still near 0.9 bar at 7.1 s. A read that
+    # times out at 7.1 s was retried as one at 0 bar (the command watched, not the pressure):
+    # blind with the muscle pressurised, no interlock could act until a reading came
+    c = config.replace(**PRECONDITIONED, sim={"faults": {"read_timeout_at_s": 7.1}})
+    result, run = record(c, tmp_path)
+    assert result.status == "failed" and result.exit_code == 1, result.reason
+    found = re.match(r"read interlock: no reading within 2 s with 0 bar commanded and "
+                     r"(\d\.\d{3}) bar last read at 7\.1 s \(", result.reason)
+    assert found, result.reason
+    last_bar = run.samples["pressure_bar"][run.samples["sample"] == 70].iloc[0]
+    assert float(found.group(1)) == pytest.approx(last_bar, abs=5e-4)
+    assert 0.5 < last_bar < 1.0  # exhausting: above the 0.05 bar vent threshold
+    assert run.meta.vent_check["verified"]
+    # vented (the last reading below the threshold), a timeout is retried as before
+    c = config.replace(**PRECONDITIONED, sim={"faults": {"read_timeout_at_s": 10.0}})
+    result, run = record(c, tmp_path / "later")
+    assert result.status == "complete", result.reason
+    assert run.samples["pressure_bar"][run.samples["sample"] == 99].iloc[0] < 0.05
+
+
+def test_a_read_that_hangs_while_the_muscle_exhausts_is_vented_by_the_watchdog(config,
+                                                                             tmp_path):
+    # the same fall: the read of sample 71 hangs with 0 bar commanded and the muscle near
+    # 0.9 bar. The watchdog looked at the command only and let it hang, the books unkept
+    import threading
+
+    c = config.replace(**PRECONDITIONED, daq={"read_timeout_s": 0.5})
+    backend = SimBackend(c)
+    read, seen = backend.read, {}
+
+    def hanging(n, timeout):
+        if backend._index == 71 and not seen:
+            seen["command_bar"] = backend.bench.command_bar
+            released = threading.Event()
+            # hangs until the watchdog recorded it (the test's net: 10 s)
+            deadline = time.monotonic() + 10
+            while time.monotonic() < deadline and not released.is_set():
+                meta = json.loads((run.recorder.path / "run.json").read_text())
+                if meta["status"] == "failed":
+                    seen["meta"] = meta
+                    released.set()
+                time.sleep(0.01)
+        return read(n, timeout)
+
+    backend.read = hanging
+    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = run.execute()
+    assert seen["command_bar"] == 0.0  # vent commanded when the read hung
+    assert "meta" in seen, result.reason  # recorded while it hung
+    assert seen["meta"]["manual_vent_required"]
+    assert re.match(r"read interlock: the read of the device did not return within [\d.]+ s "
+                    r"\(its timeout 0\.5 s\) with 0 bar commanded and 0\.\d{3} bar last read "
+                    r"after 7\.1 s: the driver hangs; vented by the watchdog",
+                    seen["meta"]["reason"]), seen["meta"]["reason"]
+    assert result.status == "failed" and result.reason.startswith("read interlock: the read")
+    loaded = load_run(result.path)
+    assert "watchdog vent" in set(loaded.commands["purpose"])
+    assert loaded.meta.vent_check["verified"]

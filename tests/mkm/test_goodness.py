@@ -315,6 +315,90 @@ def test_a_table_without_a_declared_accuracy_is_left_out_of_the_judgement_and_na
     assert good.record()["runs_not_judged"] == [runs[1].name]
 
 
+
+def repeated_tables(tmp_path, truth: dict, cycles: int, noise_N: float = 1.0, seed: int = 3):
+    """Two step tables (eps 0 and 12.2 %) of the thick-wall model at ``truth``, ``cycles``
+    sweeps 0.5-2.5-0.5 bar each, every force off by normal noise of ``noise_N``, imported
+    without a declared accuracy; the thick-wall fit of the angle and the rubber to them."""
+    import pandas as pd
+
+    from mkm.bench.exchange import import_table
+    from mkm.fem.ladder import make_model
+
+    rng = np.random.default_rng(seed)
+    sweep = [0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.5, 1.0]
+    pressure = np.array(sweep * cycles + [0.5])
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for eps in (0.0, 0.122):
+        force = make_model("thickwall", **truth).predict(pressure, 30.0, 3.0, eps).force_N
+        table = tmp_path / f"eps{eps}.csv"
+        pd.DataFrame({"P [bar]": pressure, "F [N]": force + rng.normal(0, noise_N, force.size)}
+                     ).to_csv(table, index=False)
+        (run,) = import_table(table, tmp_path / "runs", {"id": "lab-7", "D0_mm": 30.0,
+                                                        "t0_mm": 3.0, "L0_mm": 282.0,
+                                                        "eps": eps})
+        paths.append(run.path)
+    runs = load_runs(paths)
+    source = ModelStatic("thickwall", 282.0, cache_dir=None)
+    return runs, fitting.fit(source, runs, ("theta0_deg", "rubber_scale"),
+                             fitting.nominal_values(33.0))
+
+
+def test_a_table_of_repeated_sweeps_is_judged_by_its_repeats_scatter(tmp_path):
+    """A step table without a declared accuracy whose sweeps repeat each pressure on each
+    branch measures its own noise: the residuals' scatter about each repeated step's mean
+    (three sweeps of 8 steps and a closing one: the first 0.5 bar rises once, the other 24
+    steps repeat 8 branch-pressure pairs three times each, 16 degrees of freedom per table). It
+    was not judged ('a step table has one value per step')."""
+    runs, fit = repeated_tables(tmp_path / "in", {"theta0_deg": 32.0}, cycles=3)
+    good = goodness.assess(runs, fit)
+    assert good.judged and not good.left_out
+    assert [(r.dof, r.steps, r.pressures) for r in good.repeats] == [(16, 24, 8)] * 2
+    # 1 N of noise, estimated on 16 degrees of freedom: 18 % standard error, within 3 of it
+    for found in good.repeats:
+        assert found.noise_N == pytest.approx(1.0, rel=0.54)
+    assert not good.misfit
+    assert good.record()["noise_from_repeats"][0]["dof"] == 16
+    # a 0.5 mm gap between tube and braid, which the fitted model has not: beyond the repeats
+    runs, fit = repeated_tables(tmp_path / "gap", {"theta0_deg": 32.0, "gap_mm": 0.5}, cycles=3)
+    good = goodness.assess(runs, fit)
+    assert good.judged and good.misfit and good.birge_ratio > 2
+
+
+def test_a_table_with_too_few_repeats_is_not_judged_and_says_how_many(tmp_path):
+    # one sweep: its pressures on each branch once, no scatter to measure (0 of the 10 degrees
+    # of freedom needed)
+    runs, fit = repeated_tables(tmp_path, {"theta0_deg": 32.0}, cycles=1)
+    good = goodness.assess(runs, fit)
+    assert not good.judged and "mkm import --accuracy force=" in good.why_not
+    assert good.why_not.endswith(
+        f"; too few repeats in a table to judge it by: run {runs[0].name}: 0 degrees of freedom "
+        f"(0 steps repeated at 0 pressures); run {runs[1].name}: 0 degrees of freedom (0 steps "
+        "repeated at 0 pressures); 10 needed")
+
+
+def test_judging_by_repeats_calls_a_fitting_model_a_misfit_as_rarely_as_the_noise_says():
+    """The F test of the repeats' means against their own scatter: where the model is the
+    truth, its probability is the one the test is made at (a chi-square against the scatter, as
+    if it were the known noise, calls a fitting model a misfit more often)."""
+    rng = np.random.default_rng(11)
+    groups = [np.arange(3 * g, 3 * g + 3) for g in range(5)] + [np.array([15])]
+    dof = sum(g.size - 1 for g in groups)
+    calls = naive = 0
+    for _ in range(4000):
+        residual = rng.normal(0.0, 2.0, 16)
+        found = goodness.Repeats("r", float(np.sqrt(sum(
+            np.sum((residual[g] - residual[g].mean()) ** 2) for g in groups) / dof)), dof, 15, 5)
+        chi2, nu, p, p_chi2 = goodness._from_repeats(residual, found, groups, 0.0)
+        assert stats.chi2.sf(p_chi2, nu) == pytest.approx(p, rel=1e-6)
+        calls += p < 0.01
+        naive += stats.chi2.sf(chi2 + dof, nu + dof) < 0.01
+    # P = 0.01 by construction: 40 of 4000, binomial sd 6.3; every step's residual against the
+    # scatter as if known (the repeats' own chi-square, dof, added) calls 130-150 (seeds 11-13)
+    assert abs(calls - 40) < 20 and naive > 100
+
+
 def test_a_slack_muscle_reading_a_force_offers_the_fit_of_the_zero_until_it_is_fitted():
     # a misfit whose slack steps read 2.9 N (0.05 N standard error): the note names the cell's
     # zero and the --params that fits it; with the zero fitted, what is left beyond it

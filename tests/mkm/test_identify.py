@@ -21,7 +21,7 @@ import pytest
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
-from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.bench.sim_settings import remove_simulator_settings, sim_of
 from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
@@ -41,13 +41,8 @@ def draw(rng) -> dict:
 
 def record(truth: dict, eps: float, out, model: str = "thickwall", seed: int = 0):
     """One blind simulated staircase (0.25-2.5 bar up and down) of the muscle ``truth``."""
-    scale = truth["rubber_scale"]
-    config = load_config(eps=eps).replace(sim={
-        "model": model, "fe_mesh": "coarse", "seed": seed,
-        "hysteresis_fraction": truth["hysteresis_fraction"],
-        "creep_fraction": truth["creep_fraction"],
-        "truth": {"theta0_deg": truth["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
-                  "C01_MPa": scale * SILASTIC_S.C01_MPa}})
+    config = load_config(eps=eps).replace(
+        sim={**sim_of(truth, seed, model=model), "fe_mesh": "coarse"})
     result = acquire(config, out_root=out, notify=lambda message: None)
     assert result.status == "complete"
     remove_simulator_settings(result.path)
@@ -473,11 +468,8 @@ def _festo_class_runs(truth: dict, out, model: str) -> list:
             muscle={"D0_mm": 10.0, "t0_mm": 1.5, "L0_mm": 250.0},
             regulator={"max_pressure_bar": 6.0, "full_scale_bar": 10.0},
             sequence={"pressures_bar": tuple(np.arange(1, 13) / 2), "preconditioning_cycles": 0},
-            sim={"model": model, "fe_mesh": "coarse", "seed": k, "hysteresis_fraction": 0.0,
-                 "creep_fraction": 0.0, "truth": {
-                     "theta0_deg": truth["theta0_deg"],
-                     "C10_MPa": truth["rubber_scale"] * SILASTIC_S.C10_MPa,
-                     "C01_MPa": truth["rubber_scale"] * SILASTIC_S.C01_MPa}})
+            sim={**sim_of({**truth, "hysteresis_fraction": 0.0, "creep_fraction": 0.0}, k,
+                          model=model), "fe_mesh": "coarse"})
         run = acquire(config, out_root=out, notify=lambda message: None).path
         remove_simulator_settings(run)
         runs.append(run)

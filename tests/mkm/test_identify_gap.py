@@ -11,7 +11,7 @@ import pytest
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
-from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.bench.sim_settings import remove_simulator_settings, sim_of
 from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
@@ -25,11 +25,9 @@ SEED = int(np.random.SeedSequence().entropy % 2**32)
 def record(truth: dict, eps: float, out, seed: int):
     """One blind simulated staircase (0.25-2.5 bar up and down) of the thick-wall muscle
     ``truth``, with the simulator's default friction, creep and noise."""
-    scale = truth["rubber_scale"]
-    config = load_config(eps=eps).replace(sim={
-        "model": "thickwall", "seed": seed,
-        "truth": {"theta0_deg": truth["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
-                  "C01_MPa": scale * SILASTIC_S.C01_MPa, "gap_mm": truth["gap_mm"]}})
+    config = load_config(eps=eps).replace(
+        sim=sim_of({"theta0_deg": truth["theta0_deg"], "rubber_scale": truth["rubber_scale"]},
+                   seed, gap_mm=truth["gap_mm"]))
     result = acquire(config, out_root=out, notify=lambda message: None)
     assert result.status == "complete"
     remove_simulator_settings(result.path)

@@ -24,6 +24,7 @@ import pytest
 
 from mkm.bench.config import load_config
 from mkm.bench.run import acquire
+from mkm.bench.sim_settings import sim_of
 from mkm.bench.storage import load_run
 from mkm.fem.calibration import Calibration
 from mkm.fem.materials import SILASTIC_S
@@ -61,13 +62,7 @@ CALIBRATION = {"thickwall": {
 def sim_config(eps: float, seed: int = 0, **truth):
     """The packaged bench holding the thick-wall muscle ``TRUTH`` at ``eps`` (its instruments
     other than declared by ``truth``: ``[sim.truth]``)."""
-    scale = TRUTH["rubber_scale"]
-    return load_config(eps=eps).replace(sim={
-        "model": "thickwall", "seed": seed,
-        "hysteresis_fraction": TRUTH["hysteresis_fraction"],
-        "creep_fraction": TRUTH["creep_fraction"],
-        "truth": {"theta0_deg": TRUTH["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
-                  "C01_MPa": scale * SILASTIC_S.C01_MPa, **truth}})
+    return load_config(eps=eps).replace(sim=sim_of(TRUTH, seed, **truth))
 
 
 @pytest.fixture
@@ -190,3 +185,154 @@ def test_a_muscle_identified_over_several_lengths_bounds_a_run_of_any_of_them(tm
                        "configuration declares L0_mm=200: expected"):
         force_ceiling(Calibration.load(path), dataclasses.replace(config.muscle, L0_mm=200.0),
                       2.5)
+
+
+def config_file(tmp_path, calibration: Path, margin: float = 0.0, monitor_gain: float = 1.0,
+                **replaced) -> Path:
+    """The packaged example as a lab edits it: the thick-wall muscle ``TRUTH`` simulated, its
+    identification named by ``[safety] calibration`` from the file's folder, a pressure
+    monitor reading ``monitor_gain`` of the pressure; ``replaced``: lines of the example
+    replaced (its text: the new text)."""
+    text = (Path(__file__).parents[2] / "bench/configs/paper_prototype.toml").read_text()
+    scale = TRUTH["rubber_scale"]
+    changes = {
+        "overforce_margin_fraction = 0.0":
+            f'calibration = "identified/{calibration.name}"\n'
+            f"overforce_margin_fraction = {margin}",
+        'model = "axisym"': 'model = "thickwall"',
+        "hysteresis_fraction = 0.03": f"hysteresis_fraction = {TRUTH['hysteresis_fraction']}",
+        "creep_fraction = 0.02": f"creep_fraction = {TRUTH['creep_fraction']}", **replaced}
+    for old, new in changes.items():
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    text += (f"\n[sim.truth]\ntheta0_deg = {TRUTH['theta0_deg']}\n"
+             f"C10_MPa = {scale * SILASTIC_S.C10_MPa}\nC01_MPa = {scale * SILASTIC_S.C01_MPa}\n"
+             f"monitor_gain = {monitor_gain}\n")
+    path = tmp_path / "lab" / "bench.toml"
+    (path.parent / "identified").mkdir(parents=True)
+    (path.parent / "identified" / calibration.name).write_bytes(calibration.read_bytes())
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("margin", [0.0, 0.1])
+def test_the_configurations_calibration_arms_the_interlock_at_any_margin(calibration, tmp_path,
+                                                                        mkm_run, margin):
+    # a lab that always runs with its identified muscle names it once, in [safety]; the
+    # widest margin still stops a monitor reading 0.8 of the pressure (1.25 times the force)
+    config = config_file(tmp_path, calibration, margin, monitor_gain=0.8)
+    code, out, err = mkm_run(["acquire", "--config", str(config), "--out",
+                              str(tmp_path / "runs"), "--no-progress"])
+    assert code == 1, err
+    run = load_run(Path(out.splitlines()[-1]))
+    assert run.status == "failed" and run.reason.startswith(
+        "over-force interlock: the load cell read "), run.reason
+    said = config.parent / "identified" / calibration.name
+    assert f"the muscle identified in {said} (thickwall)" in run.reason
+    assert (", plus safety.overforce_margin_fraction=0.1" in run.reason) == (margin > 0)
+    assert run.meta.vent_check["verified"]
+    # on a correct bench the same configuration completes
+    correct = config_file(tmp_path / "correct", calibration, margin)
+    code, out, err = mkm_run(["acquire", "--config", str(correct), "--out",
+                              str(tmp_path / "runs"), "--no-progress"])
+    assert code == 0, err
+
+
+@pytest.mark.parametrize("line, said", [
+    ("overforce_margin_fraction = 0.0", "overforce_margin_fraction = 0.2"),
+    ("overforce_margin_fraction = 0.0", "overforce_margin_fraction = -0.01")])
+def test_a_margin_out_of_bounds_is_one_line(tmp_path, mkm_run, line, said):
+    text = (Path(__file__).parents[2] / "bench/configs/paper_prototype.toml").read_text()
+    config = tmp_path / "bench.toml"
+    config.write_text(text.replace(line, said))
+    value = said.split(" = ")[1]
+    code, out, err = mkm_run(["check", "--config", str(config)])
+    assert (code, out) == (2, "")
+    assert err == (f"mkm check: error: config {config}: safety.overforce_margin_fraction={value} "
+                   "is invalid: expected 0 to 0.1 (a fraction of the identified force) (a wider "
+                   "margin hides a pressure monitor reading 0.8 of the pressure, the fault the "
+                   "over-force interlock is for)\n")
+
+
+def test_a_missing_calibration_of_the_configuration_is_one_line(tmp_path, mkm_run,
+                                                                calibration):
+    config = config_file(tmp_path, calibration)
+    (config.parent / "identified" / calibration.name).unlink()
+    for command in (["check"], ["acquire", "--out", str(tmp_path / "runs")]):
+        code, out, err = mkm_run([*command, "--config", str(config)])
+        assert (code, out) == (2, "")
+        assert err.startswith(f"mkm {command[0]}: error: config {config}: safety.calibration: "
+                              f"calibration {config.parent / 'identified' / calibration.name}: "
+                              "cannot read it: No such file or directory"), err
+        assert err.count("\n") == 1
+    assert not (tmp_path / "runs").exists() or not list((tmp_path / "runs").iterdir())
+
+
+def test_the_python_api_refuses_a_configuration_calibration_it_was_not_given(calibration,
+                                                                             tmp_path):
+    from mkm.bench.config import load_config as load
+    from mkm.identify.band import config_ceiling
+
+    config = load(config_file(tmp_path, calibration))
+    with pytest.raises(ValueError, match=r"safety.calibration='identified/calibration.json' "
+                       r"arms the over-force interlock: pass its ceiling"):
+        acquire(config, out_root=tmp_path / "runs", notify=lambda m: None)
+    result = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None,
+                     ceiling=config_ceiling(config))
+    assert result.status == "complete", result.reason
+
+
+def test_check_says_each_steps_ceiling_and_refuses_a_plan_that_must_trip(calibration, tmp_path,
+                                                                         mkm_run):
+    from mkm.fem.ladder import make_model
+
+    config = config_file(tmp_path, calibration)
+    code, out, err = mkm_run(["check", "--config", str(config)])
+    assert code == 0, err
+    rows = {}
+    for line in out[out.index("over-force ceiling: "):].splitlines()[2:21]:
+        step, bar, *rest = line.split()
+        most = float(rest.pop(0)) if rest[0][0].isdigit() else None
+        rows[int(step)] = (float(bar), most, " ".join(rest))
+    truth = make_model("thickwall", theta0_deg=33.0, L0_mm=282.0,
+                       C10_MPa=1.1 * SILASTIC_S.C10_MPa, C01_MPa=1.1 * SILASTIC_S.C01_MPa)
+    for step, (bar, most, said) in rows.items():
+        if bar < 1.25:  # half max_pressure_bar: not watched
+            assert most is None and said.endswith("not watched"), said
+            continue
+        # the true force at the reading taken its accuracy high (0.04 bar, and as much again
+        # at 2.5 bar as a gain), above it by the band (a few %, not the tolerances' 20 %), and,
+        # falling, the friction's upper end
+        high_bar = bar + 0.04 + 0.04 / 2.5 * bar
+        true_N = float(truth.predict(high_bar, 30.0, 3.0, 0.0).force_N)
+        friction = 1.05067 if said.startswith("down") else 1.0
+        assert 1.0 < most / friction / true_N < 1.05, (step, most, true_N)
+    # a step held falling keeps the friction's 5.07 % over the same pressure held rising
+    assert rows[14][0] == rows[4][0] == 1.25
+    assert rows[14][1] / rows[4][1] == pytest.approx(1.05067, abs=2e-4)
+    top = float(truth.predict(2.5 - 0.04 - 0.04, 30.0, 3.0, 0.0).force_N)
+    least = re.search(r"the top step, 2.5 bar: the muscle identified pulls at least (\d+) N on "
+                      r"its rise, under the force interlock at 1765 N\n", out)
+    # below what the muscle pulls rising at the reading taken its accuracy low
+    assert 0.9 * (1 - 0.05067) * top < float(least.group(1)) < (1 - 0.05067) * top
+    # a 900 N cell's interlock at 810 N: the rise to 2.5 bar must trip it
+    small = config_file(tmp_path / "small", calibration, **{
+        "capacity_N = 1961.33": "capacity_N = 900.0",
+        "sensitivity_N_per_V = 196.133": "sensitivity_N_per_V = 90.0",
+        "tare_max_shift_N = 100.0": "tare_max_shift_N = 50.0"})
+    code, out, err = mkm_run(["check", "--config", str(small)])
+    refused = (f"the muscle identified pulls at least {least.group(1)} N on the rise to the top "
+               "step, 2.5 bar (the muscle identified in "
+               f"{small.parent / 'identified' / calibration.name} (thickwall): its force less its "
+               "95 % band and friction, at the reading at its accuracy), at or beyond the force "
+               "interlock at 810 N (0.9 x loadcell.capacity_N=900): the run must stop there; "
+               "lower the top pressure to 2.35 bar or less, or use a larger load cell")
+    assert code == 1 and err.endswith(
+        f"mkm check: error: {refused}; `mkm acquire` refuses this plan: fix this first\n"), err
+    code, out, err = mkm_run(["acquire", "--config", str(small), "--out",
+                              str(tmp_path / "runs")])
+    assert (code, out) == (2, "")
+    assert err.endswith(f"mkm acquire: error: {refused}; nothing was pressurised\n"), err
+    assert not (tmp_path / "runs").exists() or not list((tmp_path / "runs").iterdir())
+    code, out, err = mkm_run(["check", "--config", str(small), "--pressures", "0.25:2.35:0.25"])
+    assert code == 0, err
