@@ -43,6 +43,8 @@ errors at once:
   staircase twice (``[sequence] repeats = 2``), whose first rise pulls less than its repeat;
   ``repeats without softening`` (by name), the staircase twice on a rubber that does not
   soften: the control, on which no softening should be named.
+- ``no lag on ramps`` (drawn only when asked for by name): no departure, the ramps of ``tubing
+  lag on ramps`` on a correct bench, whether identify names a lag that is not there.
 
 The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
 the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
@@ -89,7 +91,8 @@ from mkm.bench.sim_settings import remove_simulator_settings
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubing lag",
               "tubing lag on ramps", "first-cycle softening",
-              "first-cycle softening with repeats", "repeats without softening")
+              "first-cycle softening with repeats", "repeats without softening",
+              "no lag on ramps")
 #: what ``--departures`` draws by default: the recorded results' set
 DEFAULT_DEPARTURES = DEPARTURES[:3]
 #: the fields of a draw's printed line
@@ -119,13 +122,13 @@ def depart(muscle: dict, departure: str) -> dict:
             "frame_mm_at_capacity"]
     elif departure.startswith("tubing lag"):
         truth["line_tau_s"] = float(rng.uniform(0.2, 2.0))
-        if departure.endswith("ramps"):
-            out["ramp_to_top_s"] = float(rng.uniform(60.0, 120.0))
     elif departure.startswith("first-cycle softening"):
         truth["mullins_fraction"] = float(rng.uniform(0.05, 0.20))
         out["repeats"] = 2 if departure.endswith("repeats") else 1
     elif departure == "repeats without softening":
         out["repeats"] = 2
+    if departure.endswith("ramps"):
+        out["ramp_to_top_s"] = float(rng.uniform(60.0, 120.0))
     return out
 
 
@@ -192,9 +195,11 @@ def departure_value(muscle: dict) -> str:
     if "repeats" in muscle:
         return (f"softening {100 * t.get('mullins_fraction', 0.0):.1f} %, "
                 f"{muscle['repeats']} staircase{'s' if muscle['repeats'] > 1 else ''} per run")
+    ramp = (f", ramps reaching the top in {muscle['ramp_to_top_s']:.0f} s"
+            if "ramp_to_top_s" in muscle else "")
+    if muscle["departure"] == "no lag on ramps":
+        return f"no lag{ramp}"
     if muscle["departure"].startswith("tubing lag"):
-        ramp = (f", ramps reaching the top in {muscle['ramp_to_top_s']:.0f} s"
-                if "ramp_to_top_s" in muscle else "")
         return f"tubing lag {t['line_tau_s']:.2f} s{ramp}"
     return (f"frame {t['frame_stiffness_N_per_mm']:.4g} N/mm ({muscle['frame_mm_at_capacity']:.2f}"
             " mm at the cell's capacity)")
