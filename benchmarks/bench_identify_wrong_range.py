@@ -311,7 +311,8 @@ def first_said(verdict: str | None) -> str:
     if not marks:
         return "-"
     first = verdict.split(marks[0])[1]
-    for key, said in (("trails the pressure", "lag"), ("frame yielding", "frame"),
+    for key, said in (("trails the pressure", "lag"), ("braid (the braid, creep", "braid or frame"),
+                      ("frame yielding", "frame"),
                       ("first loading", "softening"),
                       ("braid from a creep", "braid, creep or load cell"),
                       ("load cell", "load cell or creep"),

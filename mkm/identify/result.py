@@ -617,7 +617,8 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     that the braid or the rubber's ratio, which barely move the threshold, are read from it
     too: :func:`pulls_late_first`, ``groups`` what was fitted), else :func:`ratio_first`; a
     frame yielding under the muscle's pull before both where it explains the misfit
-    (:func:`mkm.identify.procedure.frame_hint`); a lag between the monitor and the muscle
+    (:func:`mkm.identify.procedure.frame_hint`), after the other braid where that takes the
+    creep's place (it needs no bench to try); a lag between the monitor and the muscle
     before all (``cautions``' :func:`mkm.identify.procedure.lag_hint`): a fit with friction for
     the lag's loop; so does a first rise stiffer than its repeats
     (:func:`mkm.identify.procedure.softening_hint`)."""
@@ -626,10 +627,20 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     if before_all:
         return f"first, {before_all[0]}; then "
     if goodness.frame:
-        return (f"first, a frame yielding under the muscle's pull (about "
-                f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above) may be what "
-                "the fit lacks: stiffen the frame or measure its stiffness, or measure the "
-                "muscle's held length under load, and identify again; then ")
+        frame = (f"a frame yielding under the muscle's pull (about "
+                 f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above)")
+        fix = ("stiffen the frame or measure its stiffness, or measure the muscle's held length "
+               "under load, and identify again; then ")
+        braid = next((c["other_braid"]["braid"] for c in cautions
+                      if c["what"] == "braid, creep or load cell gain"), None)
+        if braid is not None:
+            # a braid other than the model's also pulls less the more it pulls (a sliding
+            # sleeve named a frame lowering chi2 by 522 where the braid lowered it by 515):
+            # the braid is tried without the bench, so first
+            return (f"first, a {braid} braid (the braid, creep or load cell note above) or "
+                    f"{frame} may be what the fit lacks: identify again with --braid {braid}; "
+                    f"if the misfit stays, {fix}")
+        return f"first, {frame} may be what the fit lacks: {fix}"
     return (pulls_late_first(groups) if goodness.pulls_late
             else ratio_first(rubber, goodness.ratio_freed))
 

@@ -277,6 +277,22 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
             "(about 2.03e+03 N/mm: the note above) may be what the fit lacks: stiffen the frame "
             "or measure its stiffness, or measure the muscle's held length under load, and "
             "identify again; then the notes above") in framed
+    # ... and after the other braid, where it takes the creep's place: bench_identify_wrong_
+    # range's seed 20261609, a sleeve sliding on its tube, was sent to the frame first (a
+    # frame lowered chi2 by 522, the sliding braid by 515 below the fit with the creep)
+    from mkm.identify.result import Identification
+
+    braid = {"what": "braid, creep or load cell gain", "other_braid": {"braid": "sliding"},
+             "verdict": "...", "ready_if": "..."}
+    sliding = Identification._verdict_line(SimpleNamespace(
+        goodness=SimpleNamespace(**{**vars(late), "frame": {"stiffness_N_per_mm": 1.7e4}}),
+        rubber=held, groups=GROUPS, instrument_warnings=[braid], notes=[]))
+    assert ("the estimates may be biased; first, a sliding braid (the braid, creep or load "
+            "cell note above) or a frame yielding under the muscle's pull (about 1.7e+04 N/mm: "
+            "the note above) may be what the fit lacks: identify again with --braid sliding; "
+            "if the misfit stays, stiffen the frame or measure its stiffness, or measure the "
+            "muscle's held length under load, and identify again; then the notes above"
+            ) in sliding
     within = SimpleNamespace(judged=True, misfit=[], reduced=1.1, birge_ratio=1.0,
                              ratio_freed=None, pulls_late=False, frame=None)
     assert "--braid" not in _verdict(within, held)
