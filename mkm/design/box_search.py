@@ -673,9 +673,16 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool,
 
 
 def box_text(box: dict) -> str:
-    """``D0 30:50 mm x t0 2:4 mm`` of a box ``{key: [low, high]}``."""
-    return " x ".join(f"{BOX_NAMES[k]} {span_text(*v)} {'deg' if k.endswith('deg') else 'mm'}"
-                      for k, v in box.items())
+    """``D0 30:50 mm x t0 2:4 mm`` of a box ``{key: [low, high]}``; where the widest tube's
+    half diameter cuts the walls (a tube has a wall: t0 < D0/2, :func:`_walls`), the walls
+    searched say so: ``t0 0.5:6 mm (walls below D0/2, 3.465 mm)``."""
+    def text(key, span):
+        said = f"{BOX_NAMES[key]} {span_text(*span)} {'deg' if key.endswith('deg') else 'mm'}"
+        if key == "t0_mm" and "D0_mm" in box and span[1] >= box["D0_mm"][1] / 2:
+            said += f" (walls below D0/2, {box['D0_mm'][1] / 2:g} mm)"
+        return said
+
+    return " x ".join(text(k, v) for k, v in box.items())
 
 
 def box_edges(row, box: dict, calibration: Calibration | None = None,

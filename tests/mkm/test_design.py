@@ -24,7 +24,7 @@ from mkm.design import (
     run_design,
     search,
 )
-from mkm.design.box_search import box_edges, larger_box
+from mkm.design.box_search import box_edges, box_text, larger_box
 from mkm.design.spec import Hints, design_muscle
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
@@ -781,6 +781,25 @@ def test_the_chosen_muscle_has_an_id_a_bench_config_takes():
     assert record["id"] == "design-D31.25-t2.5-L282-th30"
     assert Muscle.from_dict(record, "chosen_muscle").id == record["id"]
 
+
+
+def test_the_box_an_edge_note_names_is_the_one_searched_where_the_tubes_cut_the_walls():
+    """A fresh requirement over the practical range (seed 2026120722's fourth: 24.1 N at
+    1.18 bar, eps 0.003, --D0 5:6.93 --L0 60.66:112.66) chose a tube on the end of its L0 range,
+    said to sit on the edge of `D0 5:6.93 mm x t0 0.5:6 mm x ...`: no wall above 3.465 mm
+    (D0/2 of the widest tube) was searched, a tube having a wall. The box names that bound."""
+    result = run_design(["24.1N@1.18bar,eps=0.003"], {"D0_mm": (5.0, 6.93),
+                                                      "L0_mm": (60.66, 112.66)},
+                        top=1, mesh=MESH)
+    best, searched = result.chosen, result.search.candidates
+    assert best["L0_mm"] == pytest.approx(112.66)
+    assert searched["t0_mm"].max() < 6.93 / 2 < 6.0 == result.search.box["t0_mm"][1]
+    (note,) = [n for n in result.notes() if "edge of the search box" in n]
+    assert note.startswith("the chosen design sits on the edge of the search box D0 5:6.93 mm "
+                           "x t0 0.5:6 mm (walls below D0/2, 3.465 mm) x L0 60.66:112.66 mm: "
+                           "L0 = 112.7 mm (the upper end of 60.66:112.66, your --L0)")
+    # where the widest tube's half diameter is above the walls' range, the box is as given
+    assert box_text({"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0]}) == "D0 30:50 mm x t0 2:4 mm"
 
 def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):
     # the same corner optimum as above (D0 30, t0 2 of the surrogate's 30:50 x 2:4), as a user
