@@ -64,17 +64,6 @@ def steeper_braid_N(row, requirements, calibration: Calibration | None,
     return out
 
 
-
-def _identified_design(row, calibration: Calibration | None, gap_mm: float) -> bool:
-    """Whether design ``row`` is the muscle ``calibration`` identified with the FE model but
-    for its tube: its braid angle and rubber, no gap."""
-    from mkm.identify.band import identified_entry
-
-    found = identified_entry(calibration) if calibration is not None else None
-    return not (found is None or found[0] != "axisym" or gap_mm
-                or row["rubber"] != CALIBRATED_RUBBER
-                or not np.isclose(float(row["theta0_deg"]), float(found[1]["theta0_deg"])))
-
 def identified_band_N(row, requirements, calibration: Calibration | None,
                       gap_mm: float = 0.0, cache_dir=None) -> list[float | None]:
     """Per requirement, the 95 % half-width [N] of design ``row``'s FE force that the
@@ -83,9 +72,11 @@ def identified_band_N(row, requirements, calibration: Calibration | None,
     design's geometry, its solves kept in the prediction cache ``cache_dir``); None where the
     calibration holds no identified FE muscle, or the design takes another braid angle or
     rubber than the identified one, or a gap."""
-    from mkm.identify.band import prediction_band
+    from mkm.identify.band import identified_entry, prediction_band
 
-    if not _identified_design(row, calibration, gap_mm):
+    found = identified_entry(calibration) if calibration is not None else None
+    if (found is None or found[0] != "axisym" or gap_mm or row["rubber"] != CALIBRATED_RUBBER
+            or not np.isclose(float(row["theta0_deg"]), float(found[1]["theta0_deg"]))):
         return [None] * len(requirements)
     spec = parse_spec(f"axisym:mesh={row['fe_mesh']}").with_params(L0_mm=float(row["L0_mm"]))
     out: list[float | None] = []
@@ -96,39 +87,6 @@ def identified_band_N(row, requirements, calibration: Calibration | None,
         out.append(None if band is None else float(np.ravel(band)[0]))
     return out
 
-
-
-#: the mesh the identified muscle's draws are solved on (:func:`identified_held`): its
-#: probabilities match the medium mesh's on the same draws within their sampling error
-#: (``benchmarks/bench_design_band.py``) at half its cost
-SAMPLING_MESH = "coarse"
-
-
-def identified_held(row, requirements, calibration: Calibration | None,
-                    gap_mm: float = 0.0, cache_dir=None) -> list[float | None]:
-    """Per requirement, the probability that design ``row`` meets it with the identified
-    muscle's own uncertainty, sampled (:func:`mkm.identify.band.sampled_held`: the identified
-    parameters drawn, each draw solved on :data:`SAMPLING_MESH` over the requirements of one
-    eps, its solves kept in the prediction cache ``cache_dir``); None where
-    :func:`identified_band_N` gives no band."""
-    from mkm.identify.band import sampled_held
-
-    if not _identified_design(row, calibration, gap_mm):
-        return [None] * len(requirements)
-    spec = parse_spec(f"axisym:mesh={row['fe_mesh']}").with_params(L0_mm=float(row["L0_mm"]))
-    sampling = parse_spec(f"axisym:mesh={SAMPLING_MESH}").with_params(
-        L0_mm=float(row["L0_mm"]))
-    out: list[float | None] = [None] * len(requirements)
-    for eps in dict.fromkeys(r.eps for r in requirements):
-        ks = [k for k, r in enumerate(requirements) if r.eps == eps]
-        held = sampled_held(spec, calibration,
-                            [float(row[f"r{k + 1}_fe_N"]) for k in ks],
-                            [requirements[k].force_N for k in ks],
-                            [requirements[k].pressure_bar for k in ks], float(row["D0_mm"]),
-                            float(row["t0_mm"]), eps, sampling, cache_dir=cache_dir)
-        for k, p in zip(ks, [None] * len(ks) if held is None else held, strict=True):
-            out[k] = None if p is None else float(p)
-    return out
 
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",
            curve_to_bar: float | None = None, progress: bool = False, cache_dir=None,

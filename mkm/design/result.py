@@ -28,9 +28,7 @@ from mkm.design.box_search import (
 )
 from mkm.design.fe_verification import (
     BUILT_ANGLE_TOLERANCE_DEG,
-    SAMPLING_MESH,
     identified_band_N,
-    identified_held,
     ordered,
     steeper_braid_N,
     verify,
@@ -80,10 +78,6 @@ class DesignResult:
     #: muscle's own uncertainty (:func:`~mkm.design.fe_verification.identified_band_N`; None
     #: where the calibration identified none, or a robust design, which carries its own)
     identified_band_N: list = field(default_factory=list)
-    #: per requirement, the probability the chosen design meets it, from draws of the
-    #: identified muscle (:func:`~mkm.design.fe_verification.identified_held`; None where no
-    #: band)
-    identified_held: list = field(default_factory=list)
     #: the ``--tolerance`` that carries the identified muscle's 95 % intervals ("" without)
     identified_tolerance: str = ""
     #: per requirement, the chosen design's FE force with its braid
@@ -212,15 +206,8 @@ class DesignResult:
 
     def identified_probability(self) -> dict[int, float]:
         """Per requirement ``k`` with an identified band, the probability the chosen design
-        meets it: the draws' (:attr:`identified_held`), else the band's normal
-        (:meth:`linearised_probability`); empty without a band or a chosen design."""
-        drawn = dict(enumerate(self.identified_held, start=1))
-        return {k: p if drawn.get(k) is None else drawn[k]
-                for k, p in self.linearised_probability().items()}
-
-    def linearised_probability(self) -> dict[int, float]:
-        """Per requirement ``k`` with an identified band, :func:`held_with` of the chosen
-        design's FE margin and :attr:`identified_band_N`: the band's normal, a linearisation."""
+        meets it (:func:`held_with` of its FE margin and :attr:`identified_band_N`); empty
+        without a band or a chosen design."""
         best = self.chosen
         return {} if best is None else {
             k: held_with(float(best[f"r{k}_fe_margin_N"]), band)
@@ -230,23 +217,14 @@ class DesignResult:
         """The chosen design's FE force at each requirement with the identified muscle's band,
         the probability it holds, and what to do where one is below
         :data:`~mkm.design.spec.DEFAULT_PROBABILITY`."""
-        from mkm.identify.band import SAMPLED_DRAWS
-
         target = 100 * DEFAULT_PROBABILITY
-        linear = self.linearised_probability()
-        drawn = any(p is not None for p in self.identified_held)
         forces = "; ".join(
             f"r{k} ({self.search.requirements[k - 1].label}) {float(best[f'r{k}_fe_N']):.4g} "
             f"+- {self.identified_band_N[k - 1]:.3g} N, met by "
-            f"{float(best[f'r{k}_fe_margin_N']):.3g} N: {_chance(p)}"
-            + (f" (the band's normal says {100 * linear[k]:.0f} %)"
-               if drawn and abs(linear[k] - p) > sampling_error(p) else "")
-            for k, p in held.items())
-        how = (f"; the chance from {SAMPLED_DRAWS} muscles drawn from them, each solved on the "
-               f"FE's {SAMPLING_MESH} mesh" if drawn else "")
+            f"{float(best[f'r{k}_fe_margin_N']):.3g} N: {_chance(p)}" for k, p in held.items())
         text = (f"the chosen design's FE forces at the calibration's values, with the identified "
-                f"muscle's own uncertainty (95 %, its intervals carried through the FE model"
-                f"{how}): {forces}")
+                f"muscle's own uncertainty (95 %, its intervals carried through the FE model): "
+                f"{forces}")
         short = [f"r{k}" for k, p in held.items() if p < DEFAULT_PROBABILITY]
         if not short:
             return text + f"; every requirement holds with {target:g} % or more"
@@ -343,9 +321,6 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
     band = ([] if tolerances is not None or ok.empty else
             identified_band_N(ok.iloc[0], found.requirements, calibration, found.gap_mm,
                               cache_dir))
-    drawn = ([] if not any(b is not None for b in band) else
-             identified_held(ok.iloc[0], found.requirements, calibration, found.gap_mm,
-                             cache_dir))
     # how sure a nominal margin is where no identification says: the braid angle built
     steeper = ([] if tolerances is not None or ok.empty or any(b is not None for b in band)
                else steeper_braid_N(ok.iloc[0], found.requirements, calibration,
@@ -357,7 +332,7 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         "meets_all", "min_fe_margin_pct", "fe_mesh", "flags", "fe_failure"]
     return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits,
                         probability=None if tolerances is None else probability,
-                        identified_band_N=band, identified_held=drawn,
+                        identified_band_N=band,
                         identified_tolerance=identified_tolerance(calibration),
                         steeper_braid_N=steeper)
 
@@ -417,18 +392,6 @@ def held_with(margin_N: float, band_N: float) -> float:
     if band_N <= 0.0:
         return 1.0 if margin_N >= 0.0 else 0.0
     return float(stats.norm.cdf(margin_N * Z95 / band_N))
-
-
-def sampling_error(probability: float, draws: int | None = None) -> float:
-    """Twice the standard error of a probability sampled from ``draws`` (default
-    :data:`~mkm.identify.band.SAMPLED_DRAWS`) draws: a sampled and another probability that
-    differ by more differ by more than the draws can tell (0.071 at 50 % of 200)."""
-    from mkm.identify.band import SAMPLED_DRAWS
-
-    n = draws or SAMPLED_DRAWS
-    p = min(max(float(probability), 0.0), 1.0)
-    # at least one draw's worth: none of 200 draws failing is no certainty
-    return 2.0 * float(np.sqrt(max(p * (1.0 - p), 1.0 / n) / n))
 
 
 def _chance(probability: float) -> str:
@@ -513,8 +476,6 @@ def _resolution(s) -> dict:
 
 def design_record(result: DesignResult) -> dict:
     """What ``designs.json`` records besides provenance (also the ``attrs`` of :func:`design`)."""
-    from mkm.identify.band import SAMPLED_DRAWS, SAMPLED_SEED
-
     s = result.search
     return {"requirements": [asdict(r) | {"label": f"r{k}: {r.label}"}
                              for k, r in enumerate(s.requirements, start=1)],
@@ -549,14 +510,6 @@ def design_record(result: DesignResult) -> dict:
             # per requirement, the chance the chosen design meets it by that band (null: none)
             "identified_probability": [result.identified_probability().get(k) for k in
                                        range(1, len(result.identified_band_N) + 1)],
-            # the same from the band's normal (a linearisation), and how the chance was drawn
-            "identified_probability_band": [
-                result.linearised_probability().get(k)
-                for k in range(1, len(result.identified_band_N) + 1)],
-            "identified_draws": ({"draws": SAMPLED_DRAWS, "seed": SAMPLED_SEED,
-                                  "mesh": SAMPLING_MESH}
-                                 if any(p is not None for p in result.identified_held)
-                                 else None),
             "steeper_braid_N": result.steeper_braid_N,
             # the chosen design as the muscle every other command reads (null: none confirmed)
             "chosen_muscle": chosen.record() if (chosen := result.chosen_muscle(

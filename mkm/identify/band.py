@@ -97,67 +97,6 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
     calibration holds no identified muscle of this model, or the spec overrides the identified
     angle or rubber. Its solves are kept in the prediction cache ``cache_dir``
     (:mod:`mkm.prediction_cache`; None: no cache)."""
-    parts = _band_parts(spec, calibration, pressure_bar, D0_mm, t0_mm, eps, cache_dir)
-    if parts is None:
-        return None
-    names, covariance, force_at, band = parts
-    # the force at the band's own (unrounded) values: the differences are taken from it
-    base = force_at({})
-    steps = [STEP_SD * np.sqrt(max(covariance[k, k], 0.0)) or 1e-6 for k in range(len(names))]
-    gradient = [(force_at({name: step}) - base) / step
-                for name, step in zip(names, steps, strict=True)]
-    G = np.array(gradient).reshape(len(names), -1)
-    variance = np.einsum("in,ij,jn->n", G, covariance, G) if names else np.zeros(base.size)
-    variance = variance + _other_variance(band, force_at, base, force_N)
-    return Z95 * np.sqrt(variance).reshape(np.shape(force_N))
-
-
-#: the draws of :func:`sampled_held`, and their seed (the same draws each time: a repeated
-#: design takes their solves from the prediction cache)
-SAMPLED_DRAWS = 200
-SAMPLED_SEED = 20261207
-
-
-def sampled_held(spec, calibration, force_N, required_N, pressure_bar, D0_mm: float,
-                 t0_mm: float, eps: float, sampling_spec=None, draws: int = SAMPLED_DRAWS,
-                 cache_dir=None) -> np.ndarray | None:
-    """The probability that each force ``force_N`` the model of ``spec`` predicted with
-    ``calibration`` at the pressures ``pressure_bar`` (one muscle, one eps) is at least
-    ``required_N``, sampled: ``draws`` muscles drawn from the identified parameters' normal
-    distribution (the covariance :func:`prediction_band` propagates), each solved over the
-    pressures with ``sampling_spec`` (a cheaper mesh of the same model; default ``spec``), its
-    forces shifted by ``force_N`` less ``sampling_spec``'s at the identified values; the
-    model-form terms, the load cell's tolerance and the misfit a normal around each draw, as
-    the band adds them. Not linearised: where the force is not linear in the parameters (the
-    braid angle and the rubber together) the band's normal misstates it. Each draw's solve is
-    kept in the prediction cache ``cache_dir``. None where :func:`prediction_band` gives no
-    band."""
-    from scipy import stats
-
-    pressure_bar = np.atleast_1d(np.asarray(pressure_bar, dtype=float))
-    parts = _band_parts(spec, calibration, pressure_bar, D0_mm, t0_mm, eps, cache_dir)
-    if parts is None:
-        return None
-    names, covariance, force_at, band = parts
-    force_N = np.broadcast_to(np.asarray(force_N, dtype=float), pressure_bar.shape)
-    other = _other_variance(band, force_at, force_at({}), force_N)
-    sampler = _band_parts(sampling_spec or spec, calibration, pressure_bar, D0_mm, t0_mm, eps,
-                          cache_dir)[2]
-    shift = force_N - sampler({})
-    moves = np.random.default_rng(SAMPLED_SEED).multivariate_normal(
-        np.zeros(len(names)), covariance, draws)
-    forces = np.array([sampler(dict(zip(names, move, strict=True))) for move in moves]) + shift
-    margin = forces - np.asarray(required_N, dtype=float)
-    spread = np.sqrt(other)
-    held = np.where(spread > 0, stats.norm.cdf(margin / np.where(spread > 0, spread, 1.0)),
-                    margin >= 0)
-    return held.mean(axis=0)
-
-
-def _band_parts(spec, calibration, pressure_bar, D0_mm, t0_mm, eps, cache_dir):
-    """``(names, covariance, force_at, band)`` of the identified muscle of ``calibration`` at
-    the inputs: ``force_at(shift)`` the model of ``spec``'s force with the identified values
-    moved by ``shift`` (``{name: change}``); None where :func:`prediction_band` gives none."""
     found = identified_entry(calibration) if calibration is not None else None
     if found is None or "band" not in found[1]["identified"]:
         return None
@@ -183,19 +122,18 @@ def _band_parts(spec, calibration, pressure_bar, D0_mm, t0_mm, eps, cache_dir):
                                               *fitting.TERM_BOUNDS["c01_fraction"]))
         if "gap_mm" in moved:
             moved["gap_mm"] = max(moved["gap_mm"], 0.0)
-        moved["rubber_scale"] = max(moved["rubber_scale"], 1e-6)  # a draw's far tail
         geometry = {g: (moved[g] if g in shift or g in names else inputs[g])
                     for g in fitting.GEOMETRY}
         return _force(spec, calibration, moved, pressure_bar, geometry["D0_mm"],
                       geometry["t0_mm"], eps, cache_dir)
 
-    return names, covariance, force_at, band
-
-
-def _other_variance(band: dict, force_at, base, force_N) -> np.ndarray:
-    """The band's variance [N^2] besides the identified parameters': each model-form term, the
-    load cell's tolerance on ``force_N`` and the misfit."""
-    variance = np.zeros(np.size(base))
+    # the force at the band's own (unrounded) values: the differences are taken from it
+    base = force_at({})
+    steps = [STEP_SD * np.sqrt(max(covariance[k, k], 0.0)) or 1e-6 for k in range(len(names))]
+    gradient = [(force_at({name: step}) - base) / step
+                for name, step in zip(names, steps, strict=True)]
+    G = np.array(gradient).reshape(len(names), -1)
+    variance = np.einsum("in,ij,jn->n", G, covariance, G) if names else np.zeros(base.size)
     # a term is evaluated where it moves the parameters, not linearised: it may start the
     # force at a step the identified muscle is slack at (a threshold moved)
     for term in band.get("terms", ()):
@@ -203,7 +141,8 @@ def _other_variance(band: dict, force_at, base, force_N) -> np.ndarray:
         variance = variance + moved**2 / (3.0 if term["kind"] == "one-sided" else 1.0)
     tolerance = float(band.get("sensitivity_tolerance", 0.0))
     variance = variance + (tolerance / np.sqrt(3.0) * np.ravel(force_N)) ** 2
-    return variance + float(band.get("misfit_rms_N", 0.0)) ** 2
+    variance = variance + float(band.get("misfit_rms_N", 0.0)) ** 2
+    return Z95 * np.sqrt(variance).reshape(np.shape(force_N))
 
 
 #: the over-force interlock's ceiling is tabulated every this much [bar], up to
