@@ -152,7 +152,7 @@ def main() -> None:
     args = parser.parse_args()
     picked = (range(len(CASES)) if args.cases is None
               else [int(i) for i in args.cases.split(",")])
-    rows = []
+    rows, record = [], provenance()
     with TemporaryDirectory() as tmp:
         for index in picked:
             name, D0, t0, where, P_or_dP, eps_or_share = CASES[index]
@@ -183,10 +183,11 @@ def main() -> None:
                 out["again"] = sampled(case, 1, 4 * args.draws)
             print(json.dumps(out), flush=True)
             rows.append(out)
-    if args.out:
-        with open(args.out, "w", encoding="utf-8") as f:
-            json.dump({"draws": args.draws, "seed": args.seed, "mesh": MESH, "rows": rows,
-                       "provenance": provenance()}, f, indent=2, default=jsonable)
+            if args.out:  # after each case: a run stopped keeps the cases it finished
+                with open(args.out, "w", encoding="utf-8") as f:
+                    json.dump({"draws": args.draws, "seed": args.seed, "mesh": MESH,
+                               "cases": len(picked), "rows": rows, "provenance": record},
+                              f, indent=2, default=jsonable)
 
 
 if __name__ == "__main__":
