@@ -907,8 +907,12 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         near_lock |= bool(lock)
         if short > 0 and not lock and force == 0.0:
             lock = _slack(req, result.hints)
+        margin = float(closest[f"r{k}_uncertainty_N"])
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
+            # met by the prediction, not by its margin: that is why it is infeasible
+            f"met with {-short:.0f} N to spare, short of the margin of {margin:.0f} N"
+            if np.isfinite(force) and -short < margin else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force")
             + lock)
     edge = _edge_clause(result, closest, "a design that meets them")
