@@ -800,6 +800,9 @@ def test_the_box_an_edge_note_names_is_the_one_searched_where_the_tubes_cut_the_
                            "L0 = 112.7 mm (the upper end of 60.66:112.66, your --L0)")
     # where the widest tube's half diameter is above the walls' range, the box is as given
     assert box_text({"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0]}) == "D0 30:50 mm x t0 2:4 mm"
+    # a tube held at one diameter cuts the walls of the range searched alike
+    assert box_text({"t0_mm": [0.5, 6.0]}, 6.0) == "t0 0.5:6 mm (walls below D0/2, 3 mm)"
+    assert box_text({"t0_mm": [2.0, 4.0]}, 30.0) == "t0 2:4 mm"
 
 
 def test_an_infeasible_requirement_met_short_of_its_margin_says_by_how_much():
