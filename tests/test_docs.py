@@ -2960,3 +2960,29 @@ def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
             "term, is then left out, said in a note, and the fit without it misfits (chi2/nu "
             f"{left_out['chi2_per_nu']:.3g}, the intervals widened x{widened}), every interval "
             "holding the truth") in said
+
+
+def test_the_design_pages_identified_band_against_its_draws_is_its_measured_files():
+    """design.md says the identified band's probability is the draws' within their sampling
+    error, and how far the band reaches below what the force can fall to: held to the two
+    files of ``bench_design_band.py`` the commands beside the words write."""
+    import json
+
+    rows = [row for name in ("design_band_dmsp20.json", "design_band_tight_wide.json")
+            for row in json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))["rows"]]
+    text = " ".join((DOCS / "guide" / "design.md").read_text(encoding="utf-8").split())
+    final = [row.get("again", row) for row in rows]  # a case the draws flagged, drawn again
+    within = sum(f["band_over_draws"] <= 1 for f in final)
+    worst = max(f["band_over_draws"] for f in final)
+    again = "; ".join(f"case {r['case']} at {r['band_over_draws']:.2f} at first, drawn again "
+                      f"with {r['again']['draws']}: {r['again']['band_over_draws']:.2f}"
+                      for r in rows if "again" in r)
+    slack = [r for r in rows if r["slack_draws"]]
+    low = min(r["low_N"] / r["band95_N"] for r in slack)
+    high = max(r["high_N"] / r["band95_N"] for r in slack)
+    assert (f"in {within} of {len(rows)} cases recorded, the band's at most {worst:.2f} of "
+            f"that error above the draws' ({again})") in text
+    assert (f"up to {max(r['slack_draws'] for r in rows)} of 200 draws slack), no draw pulls "
+            f"less than nothing: the draws' 2.5 % quantile lies {low:.2f} of the band below "
+            "the force") in text
+    assert f"the draws' 97.5 % quantile lies up to {high:.2f} of the band above it there" in text

@@ -55,6 +55,11 @@ def register(subparsers) -> None:
                        help="auto only: largest acceptable error against the finest FE, "
                        "e.g. 2%% (default 2%%)")
     add_calibration_argument(solve)
+    solve.add_argument("--cache", metavar="DIR", help="with --calibration of an identified "
+                       "muscle: its band's FE predictions kept here, as mkm design keeps them, "
+                       "so a second solve is fast (default: the user cache, predictions/)")
+    solve.add_argument("--no-cache", action="store_true",
+                       help="solve every FE sweep of the band; no cache")
     solve.set_defaults(func=with_calibration(_solve), written_files={"out": ".csv"})
 
     cal = fem_sub.add_parser(
@@ -200,9 +205,12 @@ def _solve(args) -> int:
         import dataclasses
 
         from mkm.identify.band import prediction_band
+        from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
         band = prediction_band(spec_from_args(args), args.calibration, prediction.force_N,
-                               args.pressures, args.D0, args.t0, args.eps)
+                               args.pressures, args.D0, args.t0, args.eps,
+                               cache_dir=None if args.no_cache else args.cache or
+                               DEFAULT_CACHE_DIR)
         if band is not None:
             prediction = dataclasses.replace(prediction,
                                              extras={"band95_N": band, **prediction.extras})

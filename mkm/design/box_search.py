@@ -672,10 +672,20 @@ def _check_conflicts(requirements, constraints, box, fe_search: bool,
         raise ValueError("; ".join(problems))
 
 
-def box_text(box: dict) -> str:
-    """``D0 30:50 mm x t0 2:4 mm`` of a box ``{key: [low, high]}``."""
-    return " x ".join(f"{BOX_NAMES[k]} {span_text(*v)} {'deg' if k.endswith('deg') else 'mm'}"
-                      for k, v in box.items())
+def box_text(box: dict, widest_D0_mm: float | None = None) -> str:
+    """``D0 30:50 mm x t0 2:4 mm`` of a box ``{key: [low, high]}``; where the widest tube's
+    half diameter (its D0 range's, else ``widest_D0_mm``: a D0 held at one value) cuts the walls
+    (a tube has a wall: t0 < D0/2, :func:`_walls`), the walls searched say so: ``t0 0.5:6 mm
+    (walls below D0/2, 3.465 mm)``."""
+    widest = box["D0_mm"][1] if "D0_mm" in box else widest_D0_mm
+
+    def text(key, span):
+        said = f"{BOX_NAMES[key]} {span_text(*span)} {'deg' if key.endswith('deg') else 'mm'}"
+        if key == "t0_mm" and widest is not None and span[1] >= widest / 2:
+            said += f" (walls below D0/2, {widest / 2:g} mm)"
+        return said
+
+    return " x ".join(text(k, v) for k, v in box.items())
 
 
 def box_edges(row, box: dict, calibration: Calibration | None = None,
@@ -872,7 +882,8 @@ def _edge_clause(result: Search, row, what: str) -> str:
     if not edges:
         return ""
     ranges = {k: v for k, v in result.constraints.items() if k in BOX_NAMES and v[1] > v[0]}
-    return (f"; it sits on the edge of the search box {box_text(ranges)}: {', '.join(edges)}; "
+    return (f"; it sits on the edge of the search box "
+            f"{box_text(ranges, result.constraints['D0_mm'][1])}: {', '.join(edges)}; "
             + larger_box(row, result.constraints, result.calibration, what, result.hints,
                          "none does"))
 
@@ -900,8 +911,12 @@ def _infeasible_message(result: Search, constraints: Constraints) -> str:
         near_lock |= bool(lock)
         if short > 0 and not lock and force == 0.0:
             lock = _slack(req, result.hints)
+        margin = float(closest[f"r{k}_uncertainty_N"])
         parts.append(f"requirement {k} ({req.label}) " + (
             f"short by {short:.0f} N (predicted {force:.0f} N)" if short > 0 else
+            # met by the prediction, not by its margin: that is why it is infeasible
+            f"met with {-short:.0f} N to spare, short of the margin of {margin:.0f} N"
+            if np.isfinite(force) and -short < margin else
             f"met with {-short:.0f} N to spare" if np.isfinite(force) else "no valid force")
             + lock)
     edge = _edge_clause(result, closest, "a design that meets them")

@@ -158,7 +158,7 @@ class DesignResult:
             ranges = {k: v for k, v in s.constraints.items()
                       if k in BOX_NAMES and v[1] > v[0]}
             notes.append(f"the chosen design sits on the edge of the search box "
-                         f"{box_text(ranges)}: {', '.join(edges)}; "
+                         f"{box_text(ranges, s.constraints['D0_mm'][1])}: {', '.join(edges)}; "
                          + larger_box(best, s.constraints, s.calibration, hints=s.hints))
         if best is not None and (limits := range_limits(best, s.constraints)):
             beyond = any(", beyond its " in limit for limit in limits)

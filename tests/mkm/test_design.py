@@ -24,7 +24,7 @@ from mkm.design import (
     run_design,
     search,
 )
-from mkm.design.box_search import box_edges, larger_box
+from mkm.design.box_search import box_edges, box_text, larger_box
 from mkm.design.spec import Hints, design_muscle
 from mkm.fem.eq2 import chou_hannaford_eps_max
 from mkm.fem.fe.model import Axisym
@@ -609,6 +609,27 @@ def test_a_repeated_design_solves_nothing_with_its_cache(tmp_path, monkeypatch, 
     assert again.identified_band_N == first.identified_band_N
 
 
+
+def test_a_repeated_solve_with_an_identified_muscle_takes_its_band_from_the_cache(
+        tmp_path, monkeypatch, mkm_run):
+    """`mkm fem solve --calibration` solved the band's three FE sweeps (the force at the
+    identified values and a step of each parameter) again on every call: they are kept in the
+    prediction cache as mkm design keeps its band's; the force asked for is solved each time."""
+    lab = _identified(tmp_path).path
+    argv = ["fem", "solve", "--model", f"axisym:mesh={MESH}", "--calibration", str(lab),
+            "--D0", "40", "--t0", "3", "--eps", "0.1", "--pressures", "2",
+            "--cache", str(tmp_path / "cache")]
+    solves = _counting_fe_solves(monkeypatch)
+    code, first, _ = mkm_run(argv)
+    assert code == 0 and len(solves) == 1 + 3
+    del solves[:]
+    code, again, _ = mkm_run(argv)
+    assert code == 0 and len(solves) == 1 and again == first
+    del solves[:]
+    code, uncached, _ = mkm_run([*argv, "--no-cache"])
+    assert code == 0 and len(solves) == 1 + 3 and uncached == first
+
+
 def test_the_fe_search_refines_a_braid_angle_range_too():
     """Where the FE model searches (3 bar, past the surrogate's 2.5), a range of theta0 was
     tried at its five values alone (28, 30.5, 33, 35.5, 38 deg): 500 N at 3 bar, eps 0.1 in
@@ -779,6 +800,45 @@ def test_the_chosen_muscle_has_an_id_a_bench_config_takes():
     assert record["id"] == "design-D31.25-t2.5-L282-th30"
     assert Muscle.from_dict(record, "chosen_muscle").id == record["id"]
 
+
+
+def test_the_box_an_edge_note_names_is_the_one_searched_where_the_tubes_cut_the_walls():
+    """A fresh requirement over the practical range (seed 2026120722's fourth: 24.1 N at
+    1.18 bar, eps 0.003, --D0 5:6.93 --L0 60.66:112.66) chose a tube on the end of its L0 range,
+    said to sit on the edge of `D0 5:6.93 mm x t0 0.5:6 mm x ...`: no wall above 3.465 mm
+    (D0/2 of the widest tube) was searched, a tube having a wall. The box names that bound."""
+    result = run_design(["24.1N@1.18bar,eps=0.003"], {"D0_mm": (5.0, 6.93),
+                                                      "L0_mm": (60.66, 112.66)},
+                        top=1, mesh=MESH)
+    best, searched = result.chosen, result.search.candidates
+    assert best["L0_mm"] == pytest.approx(112.66)
+    assert searched["t0_mm"].max() < 6.93 / 2 < 6.0 == result.search.box["t0_mm"][1]
+    (note,) = [n for n in result.notes() if "edge of the search box" in n]
+    assert note.startswith("the chosen design sits on the edge of the search box D0 5:6.93 mm "
+                           "x t0 0.5:6 mm (walls below D0/2, 3.465 mm) x L0 60.66:112.66 mm: "
+                           "L0 = 112.7 mm (the upper end of 60.66:112.66, your --L0)")
+    # where the widest tube's half diameter is above the walls' range, the box is as given
+    assert box_text({"D0_mm": [30.0, 50.0], "t0_mm": [2.0, 4.0]}) == "D0 30:50 mm x t0 2:4 mm"
+    # a tube held at one diameter cuts the walls of the range searched alike
+    assert box_text({"t0_mm": [0.5, 6.0]}, 6.0) == "t0 0.5:6 mm (walls below D0/2, 3 mm)"
+    assert box_text({"t0_mm": [2.0, 4.0]}, 30.0) == "t0 2:4 mm"
+
+
+def test_an_infeasible_requirement_met_short_of_its_margin_says_by_how_much():
+    """A fresh requirement over the practical range (seed 2026120722's fifth: 6852.4 N at
+    6.55 bar, eps 0.149, in D0 25.1:46.61 x t0 1.4:3.27 x L0 95.78:177.87 x theta0 15:18.9) was
+    refused as infeasible, its closest design said to meet it "with 525 N to spare": the
+    surrogate predicts more than asked, but not by its margin (6 of its std), which is why no
+    design in the box is feasible. The message says the margin it falls short of."""
+    constraints = {"D0_mm": (25.1, 46.61), "t0_mm": (1.4, 3.27), "L0_mm": (95.78, 177.87),
+                   "theta0_deg": (15.0, 18.9)}
+    with pytest.raises(ValueError) as raised:
+        search(["6852.4N@6.55bar,eps=0.149"], constraints)
+    said = re.search(r"requirement 1 \(6852.4N@6.55bar,eps=0.149\) met with (\d+) N to "
+                     r"spare, short of the margin of (\d+) N;", str(raised.value))
+    assert said, str(raised.value)
+    spare, margin = (int(v) for v in said.groups())
+    assert 0 < spare < margin
 
 def test_the_edge_line_is_printed_and_on_the_page(tmp_path, mkm_run):
     # the same corner optimum as above (D0 30, t0 2 of the surrogate's 30:50 x 2:4), as a user
