@@ -2879,9 +2879,17 @@ def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
             "or a gap") in said
     sliding = [d for d in draws if d["departure"] == "sliding braid"]
     lined = [d["chi2_per_nu"] for d in sliding if d["misfit_line"]]
-    assert all(d["verdict"] == "covered" for d in sliding)
-    assert (f"{len(lined)} with a misfit line (chi2/nu {min(lined):.3g}-{max(lined):.3g})"
-            ) in said
+    (ratio,) = [d for d in sliding if d["verdict"] != "covered"]
+    assert (f"{len(sliding) - 1} of the {len(sliding)} sliding sleeves were covered (the braid's "
+            f"model-form term holds them); {len(lined)} with a misfit line (chi2/nu "
+            f"{min(lined):.3g}-{max(lined):.3g})") in said
+    missed = next(p for p in ratio["parameters"] if p["parameter"] == "C01_over_C10")
+    assert ratio["verdict"] == "warned" and ratio["missed"] == ["C01_over_C10"]
+    assert "first, the runs reject Silastic S's rubber ratio" in ratio["verdict_line"]
+    assert (f"seed {ratio['seed']} (a rubber of C01/C10 {missed['truth']:.3g}), misfits (chi2/nu "
+            f"{ratio['chi2_per_nu']:.3g})") in said
+    assert (f"the C01/C10 interval written beside the assumed ratio, {missed['ci_low']:.3g}-"
+            f"{missed['ci_high']:.3g}, collapsed on the search's edge") in said
     gains = [d for d in draws if d["departure"] == "gains"]
     covered = [d for d in gains if d["verdict"] == "covered"]
     assert (f"With both gains off, {len(covered)} were covered "
@@ -2941,11 +2949,16 @@ def test_the_guides_bench_wrong_several_ways_is_its_measured_file():
              if not d["frame_check"]["model"].endswith("corrected by the FE model")]
     sweeps = sum(d["frame_check"]["sweeps"] for d in checked)
     assert sweeps == sum(s["frame_check_sweeps"] for s in record["summary"])
-    assert not any(n.startswith("frame: ") for d in draws for n in d["notes"])
+    (framed,) = [d for d in draws if any(n.startswith("frame: ") for n in d["notes"])]
+    assert framed["departure"] == "sliding braid"
+    assert next(r for r in rows if r["seed"] == framed["seed"])["verdict_first"] == (
+        "braid or frame")
     assert (f"The frame check ran on every judged misfit, at one sweep per run: {sweeps} sweeps "
             f"over {len(checked)} draws, of the surrogate but for seed {fe['seed']}'s "
-            f"{fe['frame_check']['sweeps']} (of the FE model, which searched there), naming no "
-            "frame") in said
+            f"{fe['frame_check']['sweeps']} (of the FE model, which searched there), naming a "
+            f"frame on one, seed {framed['seed']}, a sliding sleeve: its frame lowers chi2 by "
+            f"{framed['frame_check']['chi2_lowered']:.0f}, the sliding braid without the creep "
+            f"by {-rises(framed)[1]:.0f}") in said
     (left_out,) = [d for d in draws if any(n.startswith("creep not identifiable from these "
                                                       "runs: ") for n in d["notes"])]
     note = next(n for n in left_out["notes"] if n.startswith("creep not identifiable"))
