@@ -147,7 +147,8 @@ def main() -> None:
                         help="FE sweeps to fit (CSV with sidecar); default: the kind as shipped")
     parser.add_argument("--kind", default="muscle-gp")
     parser.add_argument("--muscles", type=int, default=60)
-    parser.add_argument("--box-muscles", type=int, default=40)
+    parser.add_argument("--box-muscles", type=int, default=40,
+                        help="fresh muscles of the paper's box (default 40; 0: none)")
     parser.add_argument("--seed", type=int, default=None)
     parser.add_argument("--draws", type=int, default=1,
                         help="draws of --muscles over the practical range, seeds S, S+1, ... "
@@ -163,6 +164,9 @@ def main() -> None:
     args = parser.parse_args()
     if args.worst < 0:
         parser.error(f"--worst {args.worst} is invalid: expected 0 or more muscles")
+    if args.box_muscles < 0 or args.muscles < 1:
+        parser.error(f"--muscles {args.muscles} --box-muscles {args.box_muscles} are invalid: "
+                     "expected at least 1 muscle of the range and 0 or more of the box")
     if args.draws < 1:
         parser.error(f"--draws {args.draws} is invalid: expected at least 1")
     if args.seeds is not None and (args.seed is not None or args.draws != 1):
@@ -224,12 +228,13 @@ def main() -> None:
                 estimator, draws + [data for _, data, _ in pooled_sets],
                 args.muscles * len(draw_seeds) + sum(drawn for _, _, drawn in pooled_sets),
                 **scored)
-        box = random_muscles(args.box_muscles, seed)
-        frame, _ = fe_sweeps(box, "fine", EVAL_PRESSURES, progress=False)
-        path = Path(folder) / "box.csv"
-        frame.to_csv(path, index=False)
-        results["paper_box"] = summary(
-            "paper's box", estimator, load_training_data(path), args.box_muscles, **scored)
+        if args.box_muscles:
+            box = random_muscles(args.box_muscles, seed)
+            frame, _ = fe_sweeps(box, "fine", EVAL_PRESSURES, progress=False)
+            path = Path(folder) / "box.csv"
+            frame.to_csv(path, index=False)
+            results["paper_box"] = summary(
+                "paper's box", estimator, load_training_data(path), args.box_muscles, **scored)
     if args.out:
         with open(args.out, "w", encoding="utf-8") as f:
             json.dump({**results, "provenance": provenance()}, f, indent=2, default=jsonable)
