@@ -27,7 +27,7 @@ it, else the FE model's calibrated one (:func:`mkm.fem.eq2.braid_lock` says whic
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -39,15 +39,21 @@ from mkm.fem.limits import LIMITS, PRACTICAL_RANGE
 from mkm.fem.tolerances import Tolerances
 
 
-def muscle_lock(config) -> BraidLock:
-    """The braid lock of the configured muscle, at its own angle or the calibrated one."""
+def muscle_lock(config, ceiling: ForceCeiling | None = None) -> BraidLock:
+    """The braid lock of the configured muscle, at its own angle, else at the angle identified
+    in the calibration that arms the over-force interlock (``ceiling``), else at the calibrated
+    one."""
+    if config.muscle.theta0_deg is None and ceiling is not None and ceiling.theta0_deg:
+        return replace(fem_braid_lock(ceiling.theta0_deg),
+                       source=f"the braid angle of {ceiling.source}")
     return fem_braid_lock(config.muscle.theta0_deg)
 
 
-def braid_lock(config) -> str | None:
+def braid_lock(config, ceiling: ForceCeiling | None = None) -> str | None:
     """The message when ``config.muscle.eps`` is at or past the braid lock
-    (:func:`mkm.fem.eq2.braid_lock`, the one definition every command uses), else None."""
-    lock = muscle_lock(config)
+    (:func:`mkm.fem.eq2.braid_lock`, the one definition every command uses; at the identified
+    angle with ``ceiling``: :func:`muscle_lock`), else None."""
+    lock = muscle_lock(config, ceiling)
     if config.muscle.eps < lock.eps_max:
         return None
     return (f"eps {config.muscle.eps:g} is past the braid lock, {lock}; the muscle pulls "
@@ -304,6 +310,7 @@ class ForceCeiling:
     least_N: tuple[float, ...]
     friction_fraction: float
     source: str
+    theta0_deg: float | None = None  # the identified braid angle, where identify fitted it
 
     def record(self) -> dict:
         """What run.json's ``calibration`` records of it (``force_ceiling``)."""
@@ -466,10 +473,13 @@ def slack_warning(config) -> str | None:
             "pressure or with a thinner wall")
 
 
-def warnings(config, rest_std_N: float | None = None) -> list[str]:
-    """Every preflight message for ``config`` (braid lock, a slack muscle, load cell, settle and
-    noise limits, practical range); ``rest_std_N``: the load cell's spread read at rest [N],
-    where known (:func:`limits_warning`)."""
-    return [w for w in (braid_lock(config), slack_warning(config), loadcell_warning(config),
+def warnings(config, rest_std_N: float | None = None,
+             ceiling: ForceCeiling | None = None) -> list[str]:
+    """Every preflight message for ``config`` (braid lock, at the identified angle with
+    ``ceiling``; a slack muscle, load cell, settle and noise limits, practical range);
+    ``rest_std_N``: the load cell's spread read at rest [N], where known
+    (:func:`limits_warning`)."""
+    return [w for w in (braid_lock(config, ceiling), slack_warning(config),
+                        loadcell_warning(config),
                         limits_warning(config, rest_std_N), practical_range_warning(config))
             if w]

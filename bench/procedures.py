@@ -634,7 +634,7 @@ def check(config: BenchConfig, backend: str | None = None, clock: str = "virtual
         lines += held
         refusal = refusal or (must_trip and f"{must_trip}; `mkm acquire` refuses this plan")
     found = [rest[key] for key in AT_REST_WARNINGS if rest.get(key)]
-    return "\n".join(lines), [*warnings(config, rest.get("std_N")), *found], refusal
+    return "\n".join(lines), [*warnings(config, rest.get("std_N"), ceiling), *found], refusal
 
 
 def _rest_lines(rest: dict, config: BenchConfig) -> list[str]:

@@ -1267,7 +1267,7 @@ def acquire(config: BenchConfig, backend: str | None = None, clock: str = "virtu
     pressurised.
     """
     config = with_backend(config, backend)
-    lock = braid_lock(config)
+    lock = braid_lock(config, ceiling)
     if lock and not allow_past_lock:
         raise ValueError(f"{lock}: pass --allow-past-lock to record it anyway")
     if ceiling is None and config.safety.calibration is not None:

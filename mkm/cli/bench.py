@@ -386,7 +386,7 @@ def _check(args) -> int:
             else "the device answered")
     # acquire refuses a muscle past its braid lock unless told: the command to type says so
     past_lock = (" and --allow-past-lock, without which it refuses a muscle past its braid "
-                 "lock" if braid_lock(config) else "")
+                 "lock" if braid_lock(config, ceiling) else "")
     then = (f"read the {len(warnings)} warning(s) above, then `mkm acquire` with the same "
             f"options{past_lock}" if warnings else "`mkm acquire` with the same options runs "
             "the steps above")

@@ -239,7 +239,8 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float, given: str = "--
     return ForceCeiling(tuple(map(float, pressure_bar)), tuple(map(float, most)),
                         tuple(map(float, least)),
                         float(FRICTION_FRACTION if friction is None else friction),
-                        f"the muscle identified in {calibration.path} ({key})")
+                        f"the muscle identified in {calibration.path} ({key})",
+                        fitted.get("theta0_deg"))
 
 
 def check_heldout(result, run_dir, out_dir) -> dict:

@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 
 from mkm.bench.config import load_config
+from mkm.bench.preflight import braid_lock
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import sim_of
 from mkm.bench.storage import load_run
@@ -170,6 +171,31 @@ def test_acquire_takes_the_calibration_and_refuses_another_muscles(calibration, 
                    "identified with its prediction band: expected the calibration.json of "
                    "`mkm identify RUNS --out DIR` for this muscle\n")
     assert not (tmp_path / "runs").exists() or not list((tmp_path / "runs").iterdir())
+
+
+def test_a_run_past_the_identified_muscles_braid_lock_is_refused(calibration, tmp_path,
+                                                                 mkm_run):
+    # a muscle identified at 37.6 deg locks at eps 0.271; the configuration declares no angle,
+    # and the FE model's calibrated 32.99 deg locks at 0.311: a run at eps 0.28 was accepted
+    steep = json.loads(calibration.read_text())
+    entry = steep["thickwall"]
+    entry["theta0_deg"] = 37.6
+    next(p for p in entry["identified"]["parameters"]
+         if p["parameter"] == "theta0_deg").update(value=37.6, ci_low=37.4, ci_high=37.8)
+    path = calibration.parent / "steep.json"
+    path.write_text(json.dumps(steep), encoding="utf-8")
+    argv = ["acquire", "--backend", "sim", "--eps", "0.28", "--out", str(tmp_path / "runs")]
+    code, out, err = mkm_run([*argv, "--calibration", str(path)])
+    assert (code, out) == (2, "")
+    assert err == ("mkm acquire: error: eps 0.28 is past the braid lock, eps_max 0.271 (the "
+                   "braid reaches its locking angle 54.7 deg from theta0 37.60 deg, the braid "
+                   f"angle of the muscle identified in {path} (thickwall)); the muscle pulls "
+                   "little or nothing there: pass --allow-past-lock to record it anyway\n")
+    assert not (tmp_path / "runs").exists() or not list((tmp_path / "runs").iterdir())
+    config = load_config(eps=0.28)
+    assert braid_lock(config) is None  # at the calibrated angle it is short of the lock
+    assert braid_lock(config, force_ceiling(Calibration.load(path), config.muscle,
+                                            config.regulator.max_pressure_bar))
 
 
 def test_a_muscle_identified_over_several_lengths_bounds_a_run_of_any_of_them(tmp_path):
