@@ -2743,7 +2743,8 @@ def test_the_guides_frame_that_yields_is_its_measured_file():
             f"{max(shares):.2f} % of their muscle's length; the stiffest gives "
             f"{give(stiffest):.2f} mm, {100 * give(stiffest) / stiffest['muscle']['L0_mm']:.2f} % "
             f"of its {stiffest['muscle']['L0_mm']:g} mm, and is named by a margin of "
-            f"{100 * (check['chi2_lowered'] / check['rest_length_chi2_lowered'] - 1):.0f} %") in said
+            f"{100 * (check['chi2_lowered'] / check['rest_length_chi2_lowered'] - 1):.0f} %"
+            ) in said
     assert (f"the frame fitted at {check['fitted_stiffness_N_per_mm']:.3g} N/mm lowers chi2 by "
             f"{check['chi2_lowered']:.3g} of {check['chi2_linearised']:.3g}, a rest length "
             f"declared wrong by {check['rest_length_chi2_lowered']:.3g}") in said
