@@ -663,36 +663,42 @@ def test_a_value_error_of_mkm_mid_run_is_a_bug_not_bad_input(config, tmp_path, m
     assert run.meta.vent_check["verified"]
 
 
+def hang_read(backend, sample: int, recorded, net_s: float) -> dict:
+    """``backend``'s read of ``sample`` made to hang (neither return nor raise: a driver that
+    does not keep its timeout) until ``recorded(meta)`` holds of the run.json of the run put
+    in the returned dict's ``run``, or ``net_s`` passes. The dict holds the pressure commanded
+    as it hung (``command_bar``) and, once recorded, that run.json (``meta``)."""
+    read, seen = backend.read, {}
+
+    def hanging(n, timeout):
+        if backend._index == sample and "command_bar" not in seen:
+            seen["command_bar"] = backend.bench.command_bar
+            deadline = time.monotonic() + net_s
+            while time.monotonic() < deadline and "meta" not in seen:
+                meta = json.loads((seen["run"].recorder.path / "run.json").read_text(
+                    encoding="utf-8"))
+                if recorded(meta):
+                    seen["meta"] = meta
+                time.sleep(0.01)
+        return read(n, timeout)
+
+    backend.read = hanging
+    return seen
+
+
 def test_a_read_that_hangs_with_a_pressure_commanded_is_vented_by_the_watchdog(config,
                                                                                tmp_path):
     # The driver's read of sample 45 (0.5 bar commanded) does not keep its 0.5 s timeout: it
     # neither returns nor raises. The loop, every interlock with it, waited in it for as long
     # as it hung, the regulator holding 0.5 bar. The run's watchdog vents 1 s past the
     # timeout and the block's time, and records why; the run stops once the read returns.
-    import threading
-
     c = config.replace(daq={"read_timeout_s": 0.5})
     backend = SimBackend(c)
-    read, seen = backend.read, {}
-
-    def hanging(n, timeout):
-        if backend._index == 45 and not seen:
-            seen["command_bar"] = backend.bench.command_bar
-            released = threading.Event()
-            # hangs until the watchdog vented and recorded it (the test's net: 60 s)
-            deadline = time.monotonic() + 60
-            while time.monotonic() < deadline and not released.is_set():
-                meta = json.loads((run.recorder.path / "run.json").read_text())
-                if backend.bench.command_bar == 0.0 and meta["status"] == "failed":
-                    seen["meta"], seen["hung_s"] = meta, time.monotonic() - start
-                    released.set()
-                time.sleep(0.01)
-        return read(n, timeout)
-
-    backend.read = hanging
-    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
-    start = time.monotonic()
-    result = run.execute()
+    # hangs until the watchdog vented and recorded it (the test's net: 60 s)
+    seen = hang_read(backend, 45, lambda meta: backend.bench.command_bar == 0.0
+                     and meta["status"] == "failed", net_s=60)
+    seen["run"] = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = seen["run"].execute()
     assert seen["command_bar"] == 0.5  # pressurised when the read hung
     # while it hung: vented, and run.json says so, the vent not yet verified
     assert seen["meta"]["manual_vent_required"] and "vented by the watchdog" in \
@@ -1144,29 +1150,12 @@ def test_a_read_that_hangs_while_the_muscle_exhausts_is_vented_by_the_watchdog(c
                                                                              tmp_path):
     # the same fall: the read of sample 71 hangs with 0 bar commanded and the muscle near
     # 0.9 bar. The watchdog looked at the command only and let it hang, the books unkept
-    import threading
-
     c = config.replace(**PRECONDITIONED, daq={"read_timeout_s": 0.5})
     backend = SimBackend(c)
-    read, seen = backend.read, {}
-
-    def hanging(n, timeout):
-        if backend._index == 71 and not seen:
-            seen["command_bar"] = backend.bench.command_bar
-            released = threading.Event()
-            # hangs until the watchdog recorded it (the test's net: 10 s)
-            deadline = time.monotonic() + 10
-            while time.monotonic() < deadline and not released.is_set():
-                meta = json.loads((run.recorder.path / "run.json").read_text())
-                if meta["status"] == "failed":
-                    seen["meta"] = meta
-                    released.set()
-                time.sleep(0.01)
-        return read(n, timeout)
-
-    backend.read = hanging
-    run = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
-    result = run.execute()
+    # hangs until the watchdog recorded it (the test's net: 10 s)
+    seen = hang_read(backend, 71, lambda meta: meta["status"] == "failed", net_s=10)
+    seen["run"] = BenchRun(c, backend, tmp_path, handle_signals=False, notify=lambda m: None)
+    result = seen["run"].execute()
     assert seen["command_bar"] == 0.0  # vent commanded when the read hung
     assert "meta" in seen, result.reason  # recorded while it hung
     assert seen["meta"]["manual_vent_required"]
