@@ -207,7 +207,12 @@ def _check_file_name(value: str, flag: str, suffix: str) -> None:
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="mkm", description="McKibben muscle bench toolkit: acquire forces, "
-                     "predict them with physics and surrogate models, validate.")
+                     "predict them with physics and surrogate models, validate.",
+                     epilog="new here: `mkm demo` records two simulated bench runs and writes "
+                     "their validation report (a few seconds, no hardware); your bench: `mkm "
+                     "check --example bench.toml`, set its [daq] and [loadcell], then `mkm "
+                     "check --config bench.toml`; forces measured elsewhere: `mkm import "
+                     "--help`")
     parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
                                 parser_class=_Parser)

@@ -1484,6 +1484,17 @@ def test_a_comma_list_powershell_split_into_words_is_said_as_one_quoted_word(arg
     assert err == (said if said.endswith("\n") else said + POWERSHELL)
 
 
+def test_mkm_alone_says_where_a_newcomer_starts(mkm_run):
+    # `mkm` alone printed the commands and options, nothing saying which to run first
+    code, out, err = mkm_run([])
+    assert (code, err) == (0, "")
+    said = " ".join(out.split())
+    assert said.endswith("new here: `mkm demo` records two simulated bench runs and writes their "
+                         "validation report (a few seconds, no hardware); your bench: `mkm check "
+                         "--example bench.toml`, set its [daq] and [loadcell], then `mkm check "
+                         "--config bench.toml`; forces measured elsewhere: `mkm import --help`")
+
+
 @pytest.mark.parametrize("argv, suggested", [
     (["idenitfy"], "identify"), (["fem", "solv"], "solve"), (["reprot"], "report"),
     (["zzz"], None),
