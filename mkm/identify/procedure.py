@@ -882,11 +882,8 @@ def lag_hint(source, runs, best, fitness) -> dict | None:
     ramps = [run for run in runs if run.ramp_rate_bar_per_s is not None]
     if not fitness.judged or not ramps:
         return None
-    holds = [run.hold >= 0 for run in runs]
-    column = np.concatenate([
-        (m - b)[h] for m, b, h in zip(fitting.traces(source, runs, best.values, LAG_STEP_S),
-                                      fitting.traces(source, runs, best.values), holds,
-                                      strict=True)])
+    column = _on_holds(runs, fitting.traces(source, runs, best.values, LAG_STEP_S),
+                       fitting.traces(source, runs, best.values))
     if not np.any(column):
         return None
 
@@ -1165,7 +1162,6 @@ def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
     if "pressure_hysteresis_bar" not in best.names:
         bounds["pressure_hysteresis_bar"] = (max(r.monitor_hysteresis_bar for r in runs) / 2,
                                              0.0)
-    holds = [run.hold >= 0 for run in runs]
     out, base = {}, None
     for name, (half, at) in bounds.items():
         if not half > 0:
@@ -1175,8 +1171,7 @@ def shared_terms(source, runs, best) -> dict[str, tuple[np.ndarray, float]]:
         if at + step > getattr(source, "box", {}).get(name, (at, np.inf))[1]:
             step = -step  # a tube at the top of the searching surrogate's box: inward
         moved = fitting.traces(source, runs, {**best.values, name: at + step})
-        out[name] = (np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds,
-                                                                   strict=True)]) / step, half)
+        out[name] = (_on_holds(runs, moved, base) / step, half)
     return out
 
 
@@ -1282,15 +1277,13 @@ def without_creep(source, fe: ModelStatic, runs, best, braid: ModelStatic) -> fl
     evaluated."""
     kept = [i for i, n in enumerate(best.names) if n not in ("creep_fraction", "log_tau")]
     base = fitting.traces(source, runs, best.values)
-    holds = [run.hold >= 0 for run in runs]
 
     def residual(values) -> np.ndarray:
         """The weighted hold residuals at ``values`` with ``braid``'s static force."""
         model = source if braid is fe else Corrected(source, _minus(
             braid.tables(runs, values), source.tables(runs, values)))
-        moved = fitting.traces(model, runs, values)
-        return best.w * (best.residual_N + np.concatenate(
-            [(m - b)[h] for m, b, h in zip(moved, base, holds, strict=True)]))
+        return best.w * (best.residual_N + _on_holds(runs, fitting.traces(model, runs, values),
+                                                     base))
 
     values = {**best.values, "creep_fraction": 0.0}
     J = best.weighted_jacobian[:, kept]
@@ -1359,10 +1352,15 @@ def _hold_change(source, runs, fit, differences) -> np.ndarray:
     """The change of ``fit``'s hold residuals [N] when the static force of each run changes by
     ``differences`` (per run: pressures and the change there), through the friction and creep
     of each run's trace."""
-    base = fitting.traces(source, runs, fit.values)
-    moved = fitting.traces(Corrected(source, differences), runs, fit.values)
-    holds = [run.hold >= 0 for run in runs]
-    return np.concatenate([(m - b)[h] for m, b, h in zip(moved, base, holds, strict=True)])
+    return _on_holds(runs, fitting.traces(Corrected(source, differences), runs, fit.values),
+                     fitting.traces(source, runs, fit.values))
+
+
+def _on_holds(runs, moved, base) -> np.ndarray:
+    """The traces ``moved`` less ``base`` (per run, [N]) at each run's held samples, in the
+    order of the fit's hold residuals: a column of their change."""
+    return np.concatenate([(m - b)[run.hold >= 0]
+                           for run, m, b in zip(runs, moved, base, strict=True)])
 
 
 def _outside_box(caught, what: str = "the fit with C01's share free",
