@@ -413,7 +413,7 @@ def bounds_of(name: str, source: StaticSource, runs, start: dict,
     if name in GEOMETRY_FACTORS or name == "L0_mm":
         declared = float(runs[0].muscle[name])
         if name == "L0_mm":
-            low = max(float(run.muscle[name]) * (1.0 - run.eps) for run in runs)
+            low = max(run.held_mm for run in runs)
             high = REST_LENGTH_FACTOR * declared
         else:
             low, high = (f * declared for f in GEOMETRY_FACTORS[name])

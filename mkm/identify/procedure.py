@@ -50,7 +50,7 @@ from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
 from mkm.identify.groups import DEFAULT_GROUPS, SEARCHES
 from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
-from mkm.identify.result import ONE_EPS_NOTE, Identification
+from mkm.identify.result import ONE_EPS_NOTE, REST_EXTRAPOLATED_NOTE, Identification
 from mkm.identify.runs import (
     load_runs,
     offset_bound_said,
@@ -1745,6 +1745,8 @@ def _identifiability(runs, best, boot) -> list[str]:
             notes.append(f"{name} fitted: {best.values[name]:.3f} mm (95 % CI {low:.3f}-"
                          f"{high:.3f}; declared {float(runs[0].muscle[name]):g} mm); "
                          f"its correlation with {with_}")
+    if "L0_mm" in names and min(r.eps for r in runs) > 0:
+        notes.append(_rest_length_extrapolated(runs, best.values["L0_mm"]))
     for name, ok in boot["identifiable"].items():
         if not ok:
             notes.append(f"{name} is not identifiable from these runs: its interval is its "
@@ -1752,6 +1754,22 @@ def _identifiability(runs, best, boot) -> list[str]:
     if "log_tau" in names and best.values["creep_fraction"] < CREEP_IDENTIFIABLE:
         notes.append("creep_fraction is near 0: creep_tau_s is not identifiable")
     return notes
+
+
+def _rest_length_extrapolated(runs, L0_mm: float) -> str:
+    """The note on a rest length fitted from runs all held shorter than the declared one: the
+    fit carries the model's threshold from their eps back to where the muscle pulls from 0 bar,
+    and near the rest length a muscle's threshold may rise as no rung of the ladder has it (the
+    published Festo maps, docs/guide/threshold.md), an error its interval does not hold."""
+    held = sorted(r.held_mm for r in runs)
+    return (f"{REST_EXTRAPOLATED_NOTE}: L0_mm {L0_mm:.1f} mm is extrapolated from runs held at "
+            f"{held[0]:.4g}-{held[-1]:.4g} mm (eps {1.0 - held[-1] / L0_mm:.3g}-"
+            f"{1.0 - held[0] / L0_mm:.3g} of it) along the model's threshold, and its interval "
+            "does not hold how far a muscle's threshold departs from the model's near its rest "
+            "length (on the published Festo maps, more steeply than any rung of the ladder "
+            "follows): to predict at or near the rest length, identify with a run held there "
+            "among them, or declare the rest length (mkm import --L0) and leave L0 out of "
+            "--params")
 
 
 def _zero_said(runs, best, boot) -> str | None:

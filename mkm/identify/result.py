@@ -75,6 +75,8 @@ TERMS = ("hysteresis_fraction", "creep_fraction", "creep_tau_s")
 #: the note of runs at one eps that leave theta0 or the rubber wide, which bounds the ready
 #: verdict to that eps
 ONE_EPS_NOTE = "theta0 and the rubber are partly confounded by runs at one eps"
+#: how the note on a rest length fitted from shortened runs alone starts
+REST_EXTRAPOLATED_NOTE = "no run is held at the declared rest length"
 
 
 def closed_forms() -> tuple[str, ...]:
@@ -444,7 +446,7 @@ class Identification:
                     "calibration.json")
         if not g.misfit:
             ready = ("calibration.json is ready for --calibration (mkm report, design, fem "
-                     "solve)" + _one_eps_only(self))
+                     "solve)" + _one_eps_only(self) + _held_lengths_only(self))
             if self.instrument_warnings:
                 return (f"verdict: the model follows these runs within their noise (chi2/nu "
                         f"{g.reduced:.3g}), but first, "
@@ -594,6 +596,17 @@ def _one_eps_only(result) -> str:
     return (f" at eps {', '.join(f'{e:g}' for e in eps)}; at another eps, identify it with "
             f"a run there too: one eps leaves the braid angle and the rubber traded against "
             f"each other (95 % CI {wide})")
+
+
+def _held_lengths_only(result) -> str:
+    """Where the rest length was fitted from shortened runs alone: that the ready calibration
+    is of their held lengths, and what makes it the muscle's at its rest length."""
+    if not any(note.startswith(REST_EXTRAPOLATED_NOTE) for note in result.notes):
+        return ""
+    held = sorted(r.held_mm for r in result.runs)
+    return (f" at the held lengths {held[0]:.4g}-{held[-1]:.4g} mm; its rest length is "
+            "extrapolated (the note on it above): identify with a run held at the rest length "
+            "among them before predicting there")
 
 
 def _branches(rising_pct: float, falling_pct: float) -> str:

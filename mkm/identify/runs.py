@@ -107,6 +107,11 @@ class RunData:
         return float(self.muscle["eps"])
 
     @property
+    def held_mm(self) -> float:
+        """The length the run held the muscle at, ``L0 (1 - eps)`` [mm]."""
+        return float(self.muscle["L0_mm"]) * (1.0 - self.eps)
+
+    @property
     def geometry(self) -> tuple[float, float, float]:
         """``(D0_mm, t0_mm, eps)``: what a force model's predict takes besides the pressure."""
         return float(self.muscle["D0_mm"]), float(self.muscle["t0_mm"]), self.eps
