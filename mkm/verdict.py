@@ -103,6 +103,14 @@ def _consistency(row: dict, summary: list[dict], no_budget: str = NO_BUDGET,
             f"{row['worst_step']}; {others}{lacking})")
 
 
+def _closest_to_slack(summary: list[dict]) -> dict | None:
+    """The model whose forces are nearest a slack run's (the smallest largest |residual| in N,
+    Equation 7 having no scale there); None where no model has one."""
+    rows = [r for r in summary if r.get("valid_points", 0) > 0
+            and math.isfinite(r.get("max_abs_residual_N", math.nan))]
+    return min(rows, key=lambda r: r["max_abs_residual_N"], default=None)
+
+
 def _is_friction(spec: str) -> bool:
     """Whether a report's model ``spec`` is the friction rung (a static force with the
     calibration's braid friction and creep)."""
@@ -277,9 +285,16 @@ def verdict(run_label: str, summary: list[dict], names: dict[str, str],
                 f"({ended or 'its status and signals below say why'}).")
     if row is None and any(r["valid_points"] > 0 for r in summary):
         # valid forces without an error: Equation 7 divides by the largest measured force
-        return (f"{run_label}: no model can be scored: the run's largest measured force is "
+        head = (f"{run_label}: no model can be scored: the run's largest measured force is "
                 "not above 0 N or its steps' uncertainty (a slack muscle), and Equation 7's "
-                "error is relative to it.")
+                "error is relative to it")
+        slack_row = _closest_to_slack(summary)
+        if slack_row is None:
+            return head + "."
+        # whether a model has the muscle slack here is what the run can still tell
+        return (f"{head}; the closest to it is {names[slack_row['model']]}, at most "
+                f"{slack_row['max_abs_residual_N']:.3g} N from its forces, "
+                f"{_consistency(slack_row, summary, no_budget, dynamics)}.")
     if row is None:
         return f"{run_label}: no model gives a valid force at any kept step: nothing to use."
     name = names[row["model"]]

@@ -305,6 +305,27 @@ def test_a_slack_run_is_said_to_be_unscorable_not_without_valid_forces():
         "Run 1: no model gives a valid force at any kept step: nothing to use.")
 
 
+def test_a_slack_run_names_the_model_closest_to_it_and_whether_it_is_consistent():
+    """The published DMSP-10-250 at eps 0.208 (0 N to 6.5 bar, imported with force=1N+1%),
+    reported with the thick-wall form identified on eps 0 and 0.064: the form pulls up to
+    10.9 N there, within the entries' uncertainty, Equation 2 up to 154 N (summary.csv of
+    that report). The verdict said no model could be scored and nothing of either."""
+    slack = [{**_row("eq2", math.nan, 5.5e-7, consistent=False), "max_abs_residual_N": 153.659,
+              "worst_E_n": -6.21389, "worst_step": 16},
+             {**_row("thickwall", math.nan, 6.9e-6), "max_abs_residual_N": 10.8849,
+              "worst_E_n": -0.667125, "worst_step": 16}]
+    assert verdict("Run 5 (eps 20.8 %)", slack, NAMES, 0.02, dynamics=False) == (
+        "Run 5 (eps 20.8 %): no model can be scored: the run's largest measured force is not "
+        "above 0 N or its steps' uncertainty (a slack muscle), and Equation 7's error is "
+        "relative to it; the closest to it is Thick-wall (Klute-Hannaford), at most 10.9 N "
+        "from its forces, consistent with the measurement (|E_n| <= 1 at every step; 1 of 2 "
+        "models is).")
+    # the only model pulling where the muscle is slack is said not consistent, with its step
+    assert verdict("Run 5 (eps 20.8 %)", slack[:1], NAMES, 0.02, dynamics=False).endswith(
+        "the closest to it is Equation 2 (Chou-Hannaford), at most 154 N from its forces, "
+        "not consistent with the measurement (E_n = -6.2 at step 16; 0 of 1 models are).")
+
+
 def test_a_run_whose_forces_are_within_their_uncertainty_is_slack():
     # a bench run of a slack muscle reads its load cell's noise, up to 0.13 N: its
     # Err% was relative to that (the FE model '103.85 % off')
