@@ -17,6 +17,11 @@ muscle's largest force, a slack entry charged for the pull predicted there. Also
 fitted rest length against Festo's nominal one, the threshold the identified muscle has at the
 table's longest length against the measured bracket (the table's last slack entry and its first
 force) and the line through its two lowest forces, chi2/nu of the fit, and its wall time.
+
+``--pairs shortened`` fits two shortened lengths instead, the rest-length run left out (the
+first shortened length with force and each of the next two), and records the fitted rest
+length's interval, whether the fit was ready (within the noise) and whether identify said its
+rest length was extrapolated.
 """
 
 from __future__ import annotations
@@ -34,6 +39,7 @@ from mkm.core.records import provenance, write_json_atomic
 from mkm.identify import identify
 from mkm.identify.fitting import ModelStatic, step_predictions
 from mkm.identify.goodness import threshold_row
+from mkm.identify.result import REST_EXTRAPOLATED_NOTE
 from mkm.identify.runs import load_runs
 from mkm.paths import published_table
 
@@ -78,16 +84,23 @@ def score(data, result, force_map, model: str) -> dict:
     return {"errors": errors, "threshold_bar": threshold["fitted threshold [bar]"]}
 
 
-def study(out: Path, fits=FITS, ratio: float | None = None) -> list[dict]:
+def pairs_of(runs: list, which: str) -> list[list]:
+    """The pairs of lengths a lab fits: ``rest``, the rest-length run with each other length
+    with force (one slack throughout fixes nothing); ``shortened``, the first shortened length
+    with force with each of the next two, the rest-length run left out (its rest length then
+    extrapolated)."""
+    loaded = [r for r in runs[1:] if r.steps["force_N_mean"].max() > 0]
+    if which == "rest":
+        return [[runs[0], other] for other in loaded]
+    return [[loaded[0], other] for other in loaded[1:3]]
+
+
+def study(out: Path, fits=FITS, ratio: float | None = None, which: str = "rest") -> list[dict]:
     rows = []
     for force_map in read_maps():
         runs = imported(force_map, out / force_map.muscle.replace(" ", "_"), ratio)
         measured = force_map.measured_threshold_bar()
-        # the rest-length run and each other length with force (one slack throughout fixes
-        # nothing)
-        loaded = [r for r in runs[1:] if r.steps["force_N_mean"].max() > 0]
-        for other in loaded:
-            pair = [runs[0], other]
+        for pair in pairs_of(runs, which):
             for model, params in fits:
                 started = time.perf_counter()
                 result = identify([r.path for r in pair], params=params, model=model,
@@ -100,8 +113,14 @@ def study(out: Path, fits=FITS, ratio: float | None = None) -> list[dict]:
                 rows.append({
                     "muscle": force_map.muscle, "model": model,
                     "fitted": params.replace(",", ", "),
-                    "trained on eps": f"0, {other.eps:g}",
+                    "trained on eps": ", ".join(f"{r.eps:g}" for r in pair),
                     "L0 mm": round(fitted_L0, 2),
+                    **({"L0 95 % CI mm": [round(v, 2) for v in
+                                          result.bootstrap["interval"]["L0_mm"]],
+                        "ready": not result.goodness.misfit,
+                        "extrapolation said": any(n.startswith(REST_EXTRAPOLATED_NOTE)
+                                                  for n in result.notes)}
+                       if which == "shortened" else {}),
                     **({"t0 mm": round(result.fit.values["t0_mm"], 3)}
                        if "t0_mm" in result.fit.values else {}),
                     "nominal L0 mm": NOMINAL_LENGTH_MM[force_map.muscle],
@@ -130,9 +149,12 @@ def main() -> None:
     parser.add_argument("--C01-over-C10", type=float, default=None, dest="ratio",
                         help="declare a rubber of this C01/C10 on import, the ratio identify "
                              "assumes (default: none declared, Silastic S's)")
+    parser.add_argument("--pairs", choices=("rest", "shortened"), default="rest",
+                        help="rest: the rest-length run with each other length (default); "
+                             "shortened: two shortened lengths, the rest-length run left out")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
-        rows = study(Path(folder), args.fits, args.ratio)
+        rows = study(Path(folder), args.fits, args.ratio, args.pairs)
     write_json_atomic(Path(args.out), {**provenance(), "table": TABLE.name, "rows": rows})
     print(f"wrote {args.out}")
 
