@@ -420,6 +420,9 @@ QUOTED_RUNS = {
                                    "20261701 20261702 20261703 20261704 20261705 --pool-with "
                                    "tests/surrogate/data/range_check.csv --out {out}",
     "surrogate_range_lock.json": "benchmarks/bench_range_lock.py --out {out}",
+    "identify_rest_length_shortened.json": "benchmarks/bench_identify_rest_length.py --fits "
+                                           "thickwall:theta0,rubber,L0 --pairs shortened "
+                                           "--out {out}",
     "design_band_dmsp20.json": "benchmarks/bench_design_band.py --cases 0,1,2,3,4,5,6,7,8 "
                                "--out {out}",
     "design_band_tight_wide.json": "benchmarks/bench_design_band.py --cases "

@@ -1787,6 +1787,47 @@ def test_the_threshold_pages_words_on_fitting_the_rest_length_are_its_measured_f
     span(said.group(19, 20), without, "held-out lengths max err %")
 
 
+def test_the_calibration_pages_words_on_a_rest_length_extrapolated_are_its_measured_files():
+    """calibration.md quotes ``identify_rest_length_shortened.json`` (each map fitted on two
+    shortened lengths, its rest length fitted) and, beside it, the same form with the
+    rest-length run among the two (``identify_rest_length.json``)."""
+    import json
+
+    def record(name):
+        return json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))["rows"]
+
+    shortened = record("identify_rest_length_shortened.json")
+    with_rest = [r for r in record("identify_rest_length.json")
+                 if r["model"] == "thickwall" and "L0" in r["fitted"].split(", ")]
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    said = re.search(
+        r"is within the declared noise on every pair \(chi2/nu ([\d.]+)-([\d.]+)\) and misses "
+        r"its rest-length curve by ([\d.]+)-([\d.]+) % of the muscle's largest force, its "
+        r"threshold there at ([\d.]+)-([\d.]+) bar against the measured ([\d.]+)-([\d.]+) bar; "
+        r"the DMSP-20-300's rest length comes out at ([\d.]+)-([\d.]+) mm against Festo's "
+        r"(\d+) mm \(its interval cut at the search's end, 1.05 times the table's (\d+) mm\)\. "
+        r"With the rest-length run among the two, the same form misses no length by more than "
+        r"([\d.]+) %", text)
+    assert said, "the paragraph on a rest length fitted from shortened runs"
+    assert len(shortened) == 4 and all(r["ready"] and r["extrapolation said"]
+                                       for r in shortened)
+
+    def span(figures, values):
+        _near(figures[0], min(values))
+        _near(figures[1], max(values))
+
+    span(said.group(1, 2), [r["chi2/nu"] for r in shortened])
+    span(said.group(3, 4), [r["rest curve max err %"] for r in shortened])
+    span(said.group(5, 6), [r["P* at eps 0 bar"] for r in shortened])
+    span(said.group(7, 8), [r["measured P* bar"] for r in shortened])
+    dmsp20 = [r for r in shortened if r["muscle"] == "Festo DMSP-20-300"]
+    span(said.group(9, 10), [r["L0 mm"] for r in dmsp20])
+    assert {r["nominal L0 mm"] for r in dmsp20} == {float(said.group(11))}
+    assert {r["L0 95 % CI mm"][1] for r in dmsp20} == {1.05 * float(said.group(12))}
+    _within(said.group(13), max(max(r["rest curve max err %"], r["held-out lengths max err %"],
+                                    r["other trained max err %"]) for r in with_rest))
+
+
 @pytest.mark.parametrize("measured", ["stability_map_draw40.csv", "stability_map_draw100.csv"])
 def test_the_guides_fresh_stability_draws_are_their_measured_files(measured):
     """force-models.md quoted two fresh draws of the stability map (the muscle no FE variant
