@@ -93,6 +93,7 @@ from mkm.verdict import (
     gives_advice,
     model_label,
     muscle_advice,
+    not_carried_over,
     recommend,
     verdict,
 )
@@ -995,13 +996,24 @@ def _verdict(r: _Run, names: dict, tolerance: float | None, runs: list[_Run] = (
     path, identified, muscle_runs = _advice_arguments(r, runs)
     record = _identified_record(r.calibration)
     fit = {**record, "options": _advice_options(r, runs)} if record else None
-    return verdict(label, r.summary, names, tolerance, choice, same,
+    name = r.calibration.path.name if r.calibration else ""
+    text = verdict(label, r.summary, names, tolerance, choice, same,
                    _fe_err(r, names), muscle_advice(
-                       path, identified, r.calibration.path.name if r.calibration else "",
-                       muscle_runs, fit, command_below, _advises_rest_length(r),
-                       [row["model"] for row in r.summary]),
+                       path, identified, name, muscle_runs, fit, command_below,
+                       _advises_rest_length(r), [row["model"] for row in r.summary]),
                    NO_BUDGET_IMPORTED if r.meta.get("imported_from") else NO_BUDGET,
                    _shows_dynamics(r), _ended(r))
+    best, within = recommend(r.summary, tolerance)
+    if choice is not None or not identified or best is None or within \
+            or best.get("consistent") is not False:
+        return text
+    # no FE model in the report to weigh the run by (a closed form's calibration): a run the
+    # identified model misses beyond its noise, unseen by it, is what the calibration lacks
+    command = advice_command(path, identified, muscle_runs, _advice_options(r, runs))
+    if command is None:
+        return text
+    said = not_carried_over(identified, name, f"`{command}`", _advises_rest_length(r))
+    return f"{text} {said[0].upper()}{said[1:]}."
 
 
 def _cut_short(r: _Run) -> str:

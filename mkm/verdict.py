@@ -199,9 +199,19 @@ def muscle_advice(run_path: str, identified: list[dict] | None = None,
         return (f"although the calibration{name} was identified {where}: the model does not "
                 f"fit {'them all' if len(identified) > 1 else 'it'} with one muscle (the "
                 f"identification's misfit notes say where){lacks}")
+    return ("which points to the muscle, not the model: "
+            + not_carried_over(identified, calibration_name, shown, at_rest_length))
+
+
+def not_carried_over(identified: list[dict], calibration_name: str, shown: str,
+                     at_rest_length: bool = False) -> str:
+    """That the calibration identified on ``identified`` (its runs as :func:`muscle_advice`
+    takes them) does not carry over to a run it did not see, and the identify command
+    (``shown``) that takes the run among them; ``at_rest_length`` as :func:`muscle_advice`."""
+    name = f" ({calibration_name})" if calibration_name else ""
     at = ", ".join(f"{r['muscle']['eps']:g}" for r in identified if "muscle" in r)
-    head = (f"which points to the muscle, not the model: the calibration{name}, identified on "
-            f"the runs at eps {at}, does not carry over to this run")
+    head = (f"the calibration{name}, identified on the runs at eps {at}, does not carry over "
+            "to this run")
     if at_rest_length:
         return (f"{head} at its declared rest length; a table's first length may be shortened "
                 f"already: identify with it among them, its rest length fitted ({shown}); if "
