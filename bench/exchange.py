@@ -1041,24 +1041,45 @@ def _rest_spread_N(force, *rests) -> float:
     return min(spreads, default=math.nan)
 
 
-def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
+def _zero_drift(group: _Group, time_s, pressure, force, rest, handling):
     """The note (if any) of a record that ends vented at another zero than it started: the
     drift recorded as ``zero_drift_N`` (end less start), said when it is beyond 4 standard
-    errors of the two rests' means."""
+    errors of the two rests' means. Where the force steps by that drift within a hold
+    (:func:`mkm.bench.series.zero_step`: the load cell zeroed again mid-record), each sample is
+    tared at the zero it was logged with, the start's before the step and the end's from it on.
+    (notes, the zero at every sample or None)."""
     end = series.end_rest(time_s, pressure, force)
     if (end.rest.start <= rest.rest.stop or end.pressure_bar > series.VENTED_THRESHOLD_BAR
             or not (math.isfinite(end.std_N) and math.isfinite(rest.std_N))):
-        return []
+        return [], None
     drift = end.force_N - rest.force_N
     handling["zero_drift_N"] = drift
     noise = 4.0 * math.hypot(end.std_N, rest.std_N)
     if abs(drift) <= noise:
-        return []
-    return [f"the force vented at the end reads {drift:+.3g} N from the zero at the start "
-            f"(beyond the rests' noise, {noise:.2g} N): a load cell that drifted, or a muscle "
-            "that did not come back; every step keeps the start's zero: where the cell drifted "
-            f"(the muscle vented pulls nothing), --tare {LINEAR_TARE} takes the zero linearly "
-            "in time between the two rests"]
+        return [], None
+    stepped = series.zero_step(pressure, force, slice(rest.rest.stop, end.rest.start), drift,
+                               _rest_spread_N(force, rest, end))
+    if stepped is None:
+        return [f"the force vented at the end reads {drift:+.3g} N from the zero at the start "
+                f"(beyond the rests' noise, {noise:.2g} N): a load cell that drifted, or a "
+                "muscle that did not come back; every step keeps the start's zero: where the "
+                f"cell drifted (the muscle vented pulls nothing), --tare {LINEAR_TARE} takes "
+                "the zero linearly in time between the two rests"], None
+    k, step = stepped
+    at_s, held_bar = float(time_s[k]), float(np.median(pressure[k:k + series.ZERO_STEP_SAMPLES]))
+    cell = group.cell(k, "force")
+    handling["zero_step"] = {"at_s": at_s, "cell": cell, "step_N": step,
+                             "pressure_bar": held_bar}
+    closing = (f"the mean force of the {end.rest.stop - end.rest.start} sample(s) of the vented "
+               "rest that ends the record")
+    handling["tare"] += f", to {at_s:.4g} s; from there ({cell}) {closing}, {end.force_N:.4g} N"
+    zero = np.where(np.arange(force.size) < k, rest.force_N, end.force_N)
+    return [f"tare {rest.force_N:.4g} N subtracted to {at_s:.4g} s, {end.force_N:.4g} N from "
+            f"there ({closing}): the force steps by {step:+.4g} N at {at_s:.4g} s (cell {cell}) "
+            f"while the pressure holds at {held_bar:.3g} bar, as far as the force vented at the "
+            "end reads from the zero at the start: the load cell zeroed again there (its tare "
+            "pressed with the muscle pulling), each sample tared at the zero it was logged "
+            f"with; --tare {rest.force_N:.4g} keeps the start's zero throughout"], zero
 
 
 def _table_zero_drift(force, zero: float, closing_rows, declared, handling) -> list[str]:
@@ -1356,7 +1377,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             notes.append(f"tare from only {n} sample(s): the pressure rises {rises_s:.3g} s "
                          "into the record; a vented rest of a second or more before it, or "
                          "--tare N, gives a surer zero")
-        drift = _zero_drift(time_s, pressure, force, rest, handling)
+        drift, line = _zero_drift(group, time_s, pressure, force, rest, handling)
     elif tare == "auto" and record:
         handling["tare"] = f"mean force of the {rest.rest.stop} row(s) before the pressure rises"
         handling["tare_std_N"] = rest.std_N
@@ -1376,7 +1397,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     handling["tare_N"] = zero
     if line is not None:
         force = force - line
-        notes.append(f"tare {zero:.4g} N at the start subtracted, then {handling['tare']}")
+        if "zero_step" not in handling:  # its note says both zeros
+            notes.append(f"tare {zero:.4g} N at the start subtracted, then {handling['tare']}")
     elif zero:
         force = force - zero
         notes.append(f"tare {zero:.4g} N subtracted ({handling['tare']})")

@@ -260,6 +260,55 @@ def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) 
                 settled)
 
 
+#: a zero that steps (:func:`zero_step`) is judged over this many samples either side
+ZERO_STEP_SAMPLES = 5
+#: ... the pressure's medians either side within this [bar]: held, the step not the muscle's
+ZERO_STEP_HELD_BAR = 0.01
+
+
+def zero_step(pressure_bar: np.ndarray, force_N: np.ndarray, within: slice, drift_N: float,
+              spread_N: float) -> tuple[int, float] | None:
+    """Where a record's zero stepped: the sample within ``within`` from which the force's
+    median over :data:`ZERO_STEP_SAMPLES` samples differs most from the median of those before
+    it, in the sense of ``drift_N`` (the closing rest's zero less the starting one's), while
+    the pressure holds (its medians within :data:`ZERO_STEP_HELD_BAR`), where that step is the
+    drift (within a tenth of it and 4 of its standard errors), 20 times the noise of a sample's
+    difference from the next or more (``spread_N``, the load cell's spread at rest), and made
+    from one sample to the next: a load cell zeroed again mid-record, its tare pressed with the
+    muscle pulling. A drift in time shows no such step. (index of the step's first sample, the
+    step [N]) or None."""
+    w = ZERO_STEP_SAMPLES
+    start, stop = max(within.start or 0, w), min(within.stop, force_N.size - w + 1)
+    if stop <= start or not math.isfinite(spread_N) or not drift_N:
+        return None
+    windows = np.lib.stride_tricks.sliding_window_view
+    f = np.median(windows(force_N, w), axis=1)  # f[k]: the median of samples k to k + w - 1
+    p = np.median(windows(pressure_bar, w), axis=1)
+    k = np.arange(start, stop)
+    steps = f[k] - f[k - w]
+    held = np.abs(p[k] - p[k - w]) <= ZERO_STEP_HELD_BAR
+    along = np.where(held, steps * math.copysign(1.0, drift_N), -np.inf)
+    best = int(np.argmax(along))
+    # the standard error of the difference of two medians of w samples (1.25 a mean's)
+    se = 1.25 * spread_N * math.sqrt(2.0 / w)
+    step = float(steps[best])
+    # a step that large, made from one sample to the next (below), is no noise
+    if (along[best] < 20.0 * math.sqrt(2.0) * spread_N
+            or abs(step - drift_N) > 0.1 * abs(drift_N) + 4.0 * se):
+        return None
+    # the windows either side of the step straddle it from w samples before on: its first
+    # sample is the first past halfway
+    k0 = int(k[best]) - w + 1
+    past = (force_N[k0:k0 + 2 * w - 1] - f[k[best] - w] - step / 2.0) * math.copysign(1.0, step)
+    first = k0 + int(np.argmax(past > 0))
+    # a zero set anew steps from one sample to the next; a force that moves over several (a
+    # ramp's turn through its friction) is no such step
+    if abs(force_N[first] - force_N[first - 1] - step) > 0.1 * abs(step) + 4.0 * math.sqrt(
+            2.0) * spread_N:
+        return None
+    return first, step
+
+
 def settled_start(time_s: np.ndarray, force_N: np.ndarray) -> int | None:
     """The first sample of a rest from which its force's least-squares trend to the end lies
     within :data:`SETTLED_TREND_SE` standard errors of none, leaving

@@ -901,6 +901,36 @@ def test_a_zero_that_drifted_linearly_is_taken_out_with_tare_linear(tmp_path, mk
     assert code == 2 and "expected auto, none, linear or a number in N" in err, err
 
 
+def test_a_load_cell_zeroed_again_mid_record_is_tared_at_each_zero(tmp_path, mkm_cli):
+    # the logger's tare pressed at 25 s, the muscle held at 2 bar: every force from there reads
+    # its pull (814 N) and the cell's 3 N low. Kept at the start's zero, the falling steps were
+    # 817 N low and the note's remedy, --tare linear, spread the step over the record as a drift
+    t, p, f, truth = _staircase_10_hz([1.0, 2.0, 2.5, 2.0, 1.0, 0.0], tare_N=3.0)
+    pull_N = float(np.mean(truth[(t >= 24.0) & (t < 25.0)]))
+    logged = f - np.where(t >= 25.0, 3.0 + pull_N, 0.0)
+    path = tmp_path / "rezeroed.csv"
+    pd.DataFrame({"Time [s]": t, "P [bar]": p, "F [N]": logged}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    step = run.meta.imported_from["zero_step"]
+    # the step's first sample, row 251 of the file (its header row 1): cell C252
+    assert step["at_s"] == pytest.approx(25.0) and step["cell"] == "C252"
+    assert step["pressure_bar"] == pytest.approx(2.0, abs=0.01)
+    # the difference of two 5-sample medians of 0.2 N noise: 0.16 N of standard error
+    assert step["step_N"] == pytest.approx(-3.0 - pull_N, abs=4 * 0.16)
+    assert f"{step['step_N']:+.4g}" == "-817.1"  # as run-folder.md quotes it
+    assert (f"the force steps by {step['step_N']:+.4g} N at 25 s (cell C252) while the "
+            "pressure holds at 2 bar, as far as the force vented at the end reads from the zero "
+            "at the start: the load cell zeroed again there") in err, err
+    assert "--tare linear" not in err
+    # every step its muscle's force: within 4 standard errors of its mean and of the rest's
+    # (0.2 N noise over about 50 and 130 samples) and the 0.2 N a hold's edge takes in
+    assert len(run.steps) == 5
+    for hold in run.steps.itertuples():
+        inside = (run.samples["step"] == hold.step).to_numpy()
+        assert hold.force_N_mean == pytest.approx(truth[inside].mean(), abs=0.2 + 4 * 0.2 * (
+            1 / np.sqrt(hold.n) + 1 / np.sqrt(50))), hold
+
+
 @pytest.mark.parametrize("closing_N, accuracy, said", [
     (0.8, [], True), (0.3, [], False), (-0.8, [], True),
     (0.8, ["--accuracy", "force=0.5N+1%"], False),  # within twice the declared 0.5 N
