@@ -347,8 +347,8 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
         row counter, :func:`mkm.bench.tables.counts_rows`): row ``k`` at ``k / sample_rate_hz``
         seconds (:func:`mkm.bench.tables.timed_rows`), a time series; refused for a table with
         a time column, for ``mkm export``'s workbook and with ``join``. A LabChart export
-        without its time column is timed so by its header's ``Interval=`` (a rate given must
-        agree with it).
+        without its time column is timed so by its header's ``Interval=``, a LabVIEW
+        measurement file by its ``Delta_X`` (a rate given must agree with it).
     between_files_s : float, optional
         Several files whose clocks each restart: the seconds from one file's last sample to
         the next one's first (default: one sample interval, each hold's creep timed from its
@@ -422,13 +422,14 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
         counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
         rate_hz, rate_from = sample_rate_hz, "--sample-rate"
         if "time" not in found and table.interval is not None:
-            # a LabChart export saved without its time column: its header states the rate
+            # a LabChart export or a LabVIEW measurement file saved without its time column:
+            # its header states the rate
             written, interval_s = table.interval
-            rate_from = f"the header's Interval= {written}"
+            rate_from = f"the header's {written}"
             if rate_hz is not None and not math.isclose(rate_hz * interval_s, 1.0,
                                                         rel_tol=1e-9):
                 raise ValueError(f"--sample-rate {rate_hz:g} Hz: {table.name}'s header states "
-                                 f"Interval= {written}, {1.0 / interval_s:g} Hz: expected the "
+                                 f"{written}, {1.0 / interval_s:g} Hz: expected the "
                                  "rate its rows were logged at; without --sample-rate the "
                                  "header's is taken")
             rate_hz = 1.0 / interval_s

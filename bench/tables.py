@@ -251,8 +251,9 @@ class RawTable:
     footer_skipped: list[str] = field(default_factory=list)
     #: what :func:`join_by_time` joined to it: the other table, its columns, the times' origin
     joined: dict = field(default_factory=dict)
-    #: the sampling interval its header block states, as written (LabChart's ``Interval=``,
-    #: ``0.01 s``), and in seconds: its rows' times where it has no time column
+    #: the sampling interval its header block states, as written (LabChart's ``Interval=
+    #: 0.01 s``, a LabVIEW measurement file's ``Delta_X 0.010000``), and in seconds: its rows'
+    #: times where it has no time column
     interval: tuple[str, float] | None = None
     #: what a TDMS file says of itself (``file``), of the group (``group``) and of its
     #: waveforms' time axis (``waveform``): their properties, kept in the run folder
@@ -416,9 +417,11 @@ def _text_table(path: Path, text: str) -> RawTable:
     # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
     parsed = [(n + j, cells) for n, line in lines
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
+    interval = None
     if path.suffix.lower() == ".lvm":
+        interval = _lvm_interval(parsed)
         parsed = _without_later_lvm_headers(path, parsed)
-    interval = _labchart_interval(parsed)
+    interval = interval or _labchart_interval(parsed)
     parsed = _labchart_header(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
                                          for c in cells])
@@ -427,7 +430,19 @@ def _text_table(path: Path, text: str) -> RawTable:
     # its comment lines too, where a lab notes what the columns do not hold
     table = replace(table, preamble=[(n, line.strip()) for n, line in numbered
                                      if n < table.header_row])
+    if path.suffix.lower() == ".lvm":
+        table = _without_empty_x_column(table)
     return replace(table, interval=interval) if interval else table
+
+
+def _without_empty_x_column(table: RawTable) -> RawTable:
+    """A LabVIEW measurement file written with an empty time column (LabVIEW's ``X_Value``
+    heading over blank cells), that column left out: its rows are timed by the channel
+    header's ``Delta_X``, not skipped each for a blank time."""
+    if not table.header or table.header[0] not in ("X_Value", "Time [s]") or any(
+            str(row[0]).strip() for row in table.rows if row):
+        return table
+    return replace(table, header=table.header[1:], rows=[row[1:] for row in table.rows])
 
 
 def _comment(line: str) -> bool:
@@ -511,7 +526,25 @@ def _labchart_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float]
     if unit is None or unit.dimensionality != registry().Unit("s").dimensionality:
         return None
     seconds = float(match["number"].replace(",", ".")) * (1 * unit).to("s").magnitude
-    return (text, seconds) if math.isfinite(seconds) and seconds > 0 else None
+    return (f"Interval= {text}", seconds) if math.isfinite(seconds) and seconds > 0 else None
+
+
+def _lvm_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float] | None:
+    """The sampling interval a LabVIEW measurement file's channel header states (``Delta_X``,
+    one cell per channel, all alike, where ``X_Dimension`` is time), as written and in
+    seconds; None where it has none, several channel headers (segments, each with its own
+    ``X0``: the rows alone do not tell when each began) or one that is no positive time."""
+    labelled = [(cells[0].strip(), [c.strip() for c in cells[1:] if c.strip()])
+                for _, cells in parsed if cells]
+    deltas = [cells for label, cells in labelled if label == "Delta_X"]
+    dimensions = [cells for label, cells in labelled if label == "X_Dimension"]
+    if len(deltas) != 1 or len(dimensions) != 1 or len(set(deltas[0])) != 1 or \
+            {d.lower() for d in dimensions[0]} != {"time"}:
+        return None
+    seconds = plain_number(deltas[0][0], ".")
+    if seconds is None or not (math.isfinite(seconds) and seconds > 0):
+        return None
+    return f"Delta_X {deltas[0][0]}", seconds
 
 
 def _labchart_header(path: Path,
@@ -1063,16 +1096,17 @@ def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
 def _labview_header(header: list[str], titles: list[list]) -> list[str]:
     """A LabVIEW measurement file's column names with what its channel header says: each
     channel's unit (``Y_Unit_Label``, in the channels' order: an x column before each, as
-    ``X_Columns Multi`` writes them, takes none) after its name, and its first x column
-    (``X_Value``) named ``Time [s]`` where the channels' ``X_Dimension`` is time; any other
-    header as it is."""
+    ``X_Columns Multi`` writes them, takes none; a file written with ``X_Columns No`` has
+    none) after its name, and its first x column (``X_Value``) named ``Time [s]`` where the
+    channels' ``X_Dimension`` is time; any other header as it is."""
     block = {str(row[0]).strip(): [str(c).strip() for c in row[1:]] for row in titles if row}
-    if "Y_Unit_Label" not in block or not header or header[0] != "X_Value":
+    if "Y_Unit_Label" not in block or not header:
         return header
     out = list(header)
-    if {d.lower() for d in block.get("X_Dimension", []) if d} == {"time"}:
+    if out[0] == "X_Value" and {d.lower() for d in block.get("X_Dimension", []) if d} == {
+            "time"}:
         out[0] = "Time [s]"
-    channels = [k for k in range(1, len(out)) if out[k] != "X_Value"]
+    channels = [k for k in range(len(out)) if header[k] != "X_Value"]
     for k, unit in zip(channels, block["Y_Unit_Label"], strict=False):
         if out[k] and unit and parse_header(out[k])[1] is None:
             out[k] = f"{out[k]} [{unit}]"

@@ -1594,6 +1594,44 @@ def test_a_labchart_export_without_its_time_is_timed_by_its_interval(interval, r
     assert not (tmp_path / "bad").exists()
 
 
+@pytest.mark.parametrize("x_columns, heading, x_cell", [
+    ("No", "Druck\tKraft\tComment", None),  # LabVIEW's 'X Value Columns: No'
+    ("One", "X_Value\tDruck\tKraft\tComment", ""),  # its 'Empty time column'
+])
+def test_a_labview_file_without_its_times_is_timed_by_its_delta_x(x_columns, heading, x_cell,
+                                                                  tmp_path, mkm_cli):
+    # written without an x column, its channels' units in the channel header's Y_Unit_Label
+    # were not read (250 kPa taken for 250 bar), and with an empty one every row was skipped
+    # for its blank time ("has no row to import"); the channel header's Delta_X times the rows
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    channel = ("Channels\t2\t\t\nSamples\t600\t600\t\nDate\t2026/12/05\t2026/12/05\t\n"
+               "Y_Unit_Label\tkPa\tkN\t\nX_Dimension\tTime\tTime\t\n"
+               "X0\t0.0000000000000000E+0\t0.0000000000000000E+0\t\n"
+               "Delta_X\t0.100000\t0.100000\t\n***End_of_Header***\t\t\t\n")
+    x = "" if x_cell is None else f"{x_cell}\t"
+    path = tmp_path / "run 7.lvm"
+    path.write_text("LabVIEW Measurement\t\nWriter_Version\t2\nSeparator\tTab\n"
+                    f"Decimal_Separator\t.\nMultiple_Headers\tNo\nX_Columns\t{x_columns}\n"
+                    "***End_of_Header***\t\n\t\n" + channel + heading + "\n"
+                    + "".join(f"{x}{a * 100:.6f}\t{b / 1000:.6f}\t\n"
+                              for a, b in zip(p, thickwall_N(p, 0.0), strict=True)),
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert ("'Druck [kPa]' -> pressure [kPa -> bar], 'Kraft [kN]' -> force [kN -> N], "
+            "'rows at 10 Hz' -> time [s]") in err
+    assert "rows at 10 Hz by the header's Delta_X 0.100000" in err
+    recorded = run.meta.imported_from
+    assert recorded["sample_rate_from"] == "the header's Delta_X 0.100000"
+    assert recorded["shape"] == "staircase"
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-9)
+    # the holds' levels and forces as written (6 digits of kPa and kN), timed by the settle test
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    np.testing.assert_allclose(run.steps["force_N_mean"], thickwall_N([1.0, 2.0, 2.5], 0.0),
+                               rtol=1e-5)
+
+
 @pytest.mark.parametrize("rate, why", [
     ("0", "--sample-rate 0 Hz is invalid: expected the rate the table's rows were logged at, a "
           "finite number > 0 Hz"),

@@ -660,7 +660,7 @@ def test_a_labchart_text_export_is_read_by_its_channel_titles_and_units(timed, t
     else:
         assert "time" not in found and table.decimal == ","
     # its header's sampling interval, as written and in seconds: the rows' times without one
-    assert table.interval == ("0.1 s", pytest.approx(0.1, rel=1e-15))
+    assert table.interval == ("Interval= 0.1 s", pytest.approx(0.1, rel=1e-15))
     # a record stopped and started again: a second block, its header block under the rows
     block = "".join(text.splitlines(keepends=True)[:9])
     with pytest.raises(ValueError, match=re.escape(
