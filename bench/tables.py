@@ -2587,28 +2587,37 @@ def check_channel_times(table: RawTable, found: dict[str, Column]) -> None:
 
 
 def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
-    """``table`` without the rows that repeat the row above in every one of ``columns``, the
+    """``table`` without the rows that repeat an earlier row in every one of ``columns``, the
     time first (its time and readings: a logger that wrote a sample twice, or rows pasted
-    twice), each named in ``repeats_skipped`` (``A12``): counted twice, a sample would halve
+    twice, one by one or as a block), each named in ``repeats_skipped`` (``A12``; ``A52 as
+    A2`` where the row it repeats is not the one above): counted twice, a sample would halve
     the standard errors of its hold, not add a reading. Where some rows share their time with
-    the row above but not their readings (a clock coarser than the sampling, whole seconds at
+    an earlier row but not their readings (a clock coarser than the sampling, whole seconds at
     10 Hz), alike rows may be samples of their own: none is skipped, each named in
     ``times_shared``."""
     indices = [p.index for c in columns for p in c.parts or (c,)]
     rows = table.rows
-
-    def alike(k: int, among) -> bool:
-        return all(str(rows[k][i]).strip() == str(rows[k - 1][i]).strip() for i in among)
-
-    same_time = [k for k in range(1, len(rows)) if alike(k, indices[:1])]
-    skipped = [k for k in same_time if alike(k, indices)]
+    first_of_time: dict[str, int] = {}
+    first_of_row: dict[tuple, int] = {}
+    same_time, skipped = [], []
+    for k, row in enumerate(rows):
+        key = tuple(str(row[i]).strip() for i in indices)
+        if key[0] in first_of_time:
+            same_time.append(k)
+            if key in first_of_row:
+                skipped.append((k, first_of_row[key]))
+        first_of_time.setdefault(key[0], k)
+        first_of_row.setdefault(key, k)
     if len(skipped) < len(same_time):
         return replace(table, times_shared=[table.ref(k, indices[0]) for k in same_time])
     if not skipped:
         return table
-    gone = set(skipped)
+    gone = {k for k, _ in skipped}
     keep = [k for k in range(len(rows)) if k not in gone]
-    return replace(table.kept(keep), repeats_skipped=[table.ref(k, indices[0]) for k in skipped])
+    # a repeat of the row above is named alone; one of a row further up, with it
+    return replace(table.kept(keep), repeats_skipped=[
+        table.ref(k, indices[0]) + ("" if k - j == 1 else f" as {table.ref(j, indices[0])}")
+        for k, j in skipped])
 
 
 def _formula(table: RawTable, k: int, column: int) -> str | None:
@@ -2779,8 +2788,11 @@ class Recognition:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))
         if repeats := self.table.repeats_skipped:
-            extras.append(f"{len(repeats)} row(s) repeating the row above (its time and "
-                          "readings) skipped: " + ", ".join(repeats[:5])
+            above = ("the row above (its time and readings)"
+                     if not any(" as " in r for r in repeats) else
+                     "an earlier row (its time and readings: rows pasted twice)")
+            extras.append(f"{len(repeats)} row(s) repeating {above} skipped: "
+                          + ", ".join(repeats[:5])
                           + (", ..." if len(repeats) > 5 else ""))
         if shared := self.table.times_shared:
             extras.append(f"{len(shared)} row(s) with the time of the row above but other "

@@ -2830,6 +2830,39 @@ def test_rows_written_twice_by_a_logger_are_counted_once_and_named(tmp_path, mkm
     (kept,), _ = _import(mkm_cli, coarse, *MUSCLE, "--eps", "0")
     assert kept.meta.imported_from["rows_skipped_as_repeats"] == [] and len(kept.samples) == 400
 
+def test_a_block_of_rows_pasted_twice_is_counted_once_and_named(tmp_path, mkm_cli):
+    # rows 150-199 of a record pasted again under row 199 (a spreadsheet's copy and paste):
+    # refused as a clock that goes backwards by 4.9 s, where every row of the block repeats an
+    # earlier one, its time and readings alike
+    rng = np.random.default_rng(5)
+    t = np.arange(0.0, 40.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 40], [0, 0, 1, 1, 2, 2, 0, 0])
+    rows = [f"{a:.1f},{b:.5f},{c:.4f}\n" for a, b, c in
+            zip(t, p, thickwall_N(p, 0.0) + rng.normal(0, 0.3, t.size), strict=True)]
+    header = "Time [s],Pressure [bar],Force [N]\n"
+    once, pasted = tmp_path / "once.csv", tmp_path / "pasted.csv"
+    once.write_text(header + "".join(rows))
+    pasted.write_text(header + "".join(rows[:200] + rows[150:]))
+    (single,), _ = _import(mkm_cli, once, *MUSCLE, "--eps", "0")
+    (run,), err = _import(mkm_cli, pasted, *MUSCLE, "--eps", "0")
+    # the file's row 202 is the record's row 201 again (its header row 1)
+    assert ("50 row(s) repeating an earlier row (its time and readings: rows pasted twice) "
+            "skipped: A202 as A152, A203 as A153, A204 as A154, A205 as A155, A206 as A156, "
+            "...") in err
+    assert run.meta.imported_from["rows_skipped_as_repeats"][-1] == "A251 as A201"
+    pd.testing.assert_frame_equal(run.steps, single.steps)
+    # a second session whose clock restarts, its readings other than the first's: no repeat,
+    # refused as before
+    again = tmp_path / "again.csv"
+    again.write_text(header + "".join(rows) + "".join(
+        f"{a:.1f},{b:.5f},{c + 0.5:.4f}\n" for a, b, c in
+        zip(t, p, thickwall_N(p, 0.0), strict=True)))
+    code, _, err = mkm_cli(["import", str(again), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and "cell A402 (column 'Time [s]'): the time goes backwards by 39.9 s" in err
+    assert not (tmp_path / "bad").exists()
+
+
 def test_rows_sharing_a_coarse_clocks_time_are_kept_and_counted(tmp_path, mkm_cli):
     # a clock in whole seconds at 10 Hz: rows sharing a time with other readings were kept
     # unsaid; 40 s of 10 rows a second, each second's last 9 rows share the first's time
