@@ -1128,6 +1128,18 @@ def _linear_tare(group: _Group, time_s, pressure, force, rest, handling):
     return rest.force_N, rest.force_N + slope * (np.asarray(time_s) - t_start)
 
 
+def _reading(force_N: float, force: np.ndarray) -> str:
+    """What a table or record without a 0 bar reading reads where its rising branch starts,
+    ``force_N``: one within 1 % of its largest force of 0 N is named as a load cell zeroed
+    there, pressurised, may read it (every force then low by the pull it was zeroed at)."""
+    said = f"reading {force_N:.4g} N"
+    if abs(force_N) > 0.01 * float(np.nanmax(np.abs(force))):
+        return said
+    return (f"{said}: a load cell zeroed there with the muscle pressurised, every force then "
+            "low by its pull there (--tare minus that pull restores them), or a muscle slack "
+            "there")
+
+
 def _never_rises(pressure_bar: np.ndarray) -> bool:
     """Whether a record's pressures stay within two plateau bands: a vented gauge's noise, or
     one hold; no steps to find."""
@@ -1357,17 +1369,20 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             + (f"it starts held at {zero_at:.3g} bar" if zero_at > series.VENTED_THRESHOLD_BAR
                else f"only {rest.rest.stop} {what}(s) before the pressure rises"))
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
-        zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
+        lowest, zero = zero, 0.0
+        handling["tare"] = "none: the table has no 0 bar row"
         # a load cell's offset would stay in every force unsaid, unless the table marks where
         # the muscle is slack (its zero: a published map's 0 N entries)
         if not ("slack" in found and flags(table, found["slack"])[group.rows].any()):
             notes.append(f"no tare: the table has no 0 bar row (its rising branch starts at "
-                         f"{zero_at:g} bar): its forces as given; --tare N gives one")
+                         f"{zero_at:g} bar, {_reading(lowest, force)}): its forces as given; "
+                         "--tare N gives one")
     elif tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR:
         # the force of a record that starts pressurised is the muscle's pull, not the zero
         zero, handling["tare"] = 0.0, (f"none: the record has no 0 bar reading (its rising "
                                        f"branch starts at {zero_at:g} bar)")
-        notes.append(f"no tare: {handling['tare'][6:]}; --tare N gives one")
+        notes.append(f"no tare: {handling['tare'][6:-1]}, {_reading(rest.force_N, force)}); "
+                     "--tare N gives one")
     elif tare == "auto" and timed:
         n = rest.rest.stop
         rises_s = time_s[min(n, time_s.size - 1)] - time_s[0]

@@ -82,8 +82,8 @@ def test_kpa_and_lbf_headers(tmp_path, mkm_cli):
     assert recorded["file"] == "lab.csv" and len(recorded["sha256"]) == 64
     assert recorded["tare"] == "none: the table has no 0 bar row"
     # said: a load cell's offset would stay in every force (the table's zero is not known)
-    assert ("no tare: the table has no 0 bar row (its rising branch starts at 0.5 bar): its "
-            "forces as given; --tare N gives one") in err
+    assert ("no tare: the table has no 0 bar row (its rising branch starts at 0.5 bar, reading "
+            f"{force[0]:.4g} N): its forces as given; --tare N gives one") in err
     assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
 
 
@@ -1278,6 +1278,35 @@ def test_a_ramp_repeated_twice_has_two_rising_and_two_falling_branches(tmp_path,
                                                   abs=0.2 + 4 * 0.3 / np.sqrt(step.n))
 
 
+@pytest.mark.parametrize("timed", [False, True])
+def test_a_load_cell_zeroed_pressurised_without_a_0_bar_reading_is_said(timed, tmp_path,
+                                                                        mkm_cli):
+    # the logger zeroed with the muscle held at 1.5 bar, the file starting there: every force
+    # low by that pull, and the line said only "no tare ... its forces as given"
+    levels = np.array([1.5, 2.0, 2.5, 3.0, 2.5, 2.0, 1.5])
+    pull_N = thickwall_N(1.5, 0.0)
+    path = tmp_path / "zeroed.csv"
+    if timed:  # 10 Hz, each level held 9 s and left in 1 s, from the first sample at 1.5 bar
+        t = np.arange(0.0, 69.0, 0.1)
+        p = np.interp(t, (10.0 * np.arange(7)[:, None] + [0.0, 9.0]).ravel(),
+                      np.repeat(levels, 2))
+        frame = {"Time [s]": t, "P [bar]": p, "F [N]": thickwall_N(p, 0.0) - pull_N}
+    else:
+        frame = {"P [bar]": levels, "F [N]": np.round(thickwall_N(levels, 0.0) - pull_N, 1)}
+    pd.DataFrame(frame).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    what = "the record has no 0 bar reading" if timed else "the table has no 0 bar row"
+    assert (f"no tare: {what} (its rising branch starts at 1.5 bar, reading 0 N: a load cell "
+            "zeroed there with the muscle pressurised, every force then low by its pull there "
+            "(--tare minus that pull restores them), or a muscle slack there)") in err, err
+    assert run.meta.imported_from["tare_N"] == 0.0
+    # given the pull, each force is the muscle's (a table's rounding to 0.1 N)
+    (given,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--tare", f"{-pull_N:.6f}")
+    assert "no tare" not in err
+    np.testing.assert_allclose(given.steps["force_N_mean"],
+                               thickwall_N(given.steps["pressure_bar_mean"], 0.0), atol=0.06)
+
+
 def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm_cli):
     # 1 -> 2.5 -> 1 bar, never vented: the force at 1 bar is the muscle's, not the zero
     t = np.arange(0.0, 20.0, 0.01)
@@ -1287,8 +1316,8 @@ def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm
                                                                                   index=False)
     (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
     assert run.meta.imported_from["tare_N"] == 0.0
-    assert ("no tare: the record has no 0 bar reading (its rising branch starts at 1 bar); "
-            "--tare N gives one") in err
+    assert ("no tare: the record has no 0 bar reading (its rising branch starts at 1 bar, "
+            f"reading {thickwall_N(1.0, 0.122):.4g} N); --tare N gives one") in err
     for step in run.steps.itertuples():  # each point the force of its own pressures
         inside = (run.samples["step"] == step.step).to_numpy()
         assert step.force_N_mean == pytest.approx(thickwall_N(p[inside], 0.122).mean(),
