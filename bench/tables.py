@@ -2597,17 +2597,19 @@ def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
     ``times_shared``."""
     indices = [p.index for c in columns for p in c.parts or (c,)]
     rows = table.rows
+
+    def alike(k: int, j: int) -> bool:
+        return all(str(rows[k][i]).strip() == str(rows[j][i]).strip() for i in indices)
+
     first_of_time: dict[str, int] = {}
-    first_of_row: dict[tuple, int] = {}
     same_time, skipped = [], []
     for k, row in enumerate(rows):
-        key = tuple(str(row[i]).strip() for i in indices)
-        if key[0] in first_of_time:
+        j = first_of_time.setdefault(str(row[indices[0]]).strip(), k)
+        if j < k:  # its time read before: by the row above, or a row further up
             same_time.append(k)
-            if key in first_of_row:
-                skipped.append((k, first_of_row[key]))
-        first_of_time.setdefault(key[0], k)
-        first_of_row.setdefault(key, k)
+            repeated = next((i for i in (k - 1, j) if alike(k, i)), None)
+            if repeated is not None:
+                skipped.append((k, repeated))
     if len(skipped) < len(same_time):
         return replace(table, times_shared=[table.ref(k, indices[0]) for k in same_time])
     if not skipped:
