@@ -78,6 +78,7 @@ from mkm.bench.tables import (
     unread_columns,
     unread_time_columns,
     volts_header,
+    weighed_columns,
     with_milliseconds,
     without_blank_rows,
     without_repeated_rows,
@@ -485,7 +486,12 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
                                         if parse_header(h)[1] else
                                         f"; by its name, {h!r} is {why}, no reading")
                                        + f": --columns {missing[0]}={h!r} reads it"
-                                       for h, why in unread_columns(table, missing[0])[:1]))
+                                       for h, why in unread_columns(table, missing[0])[:1])
+                             + "".join(f"; {h!r} holds a mass: a scale's, or a load cell "
+                                       "showing the weight it holds, is read with --columns "
+                                       f"force={h!r} --units force={weight}"
+                                       for h, weight in weighed_columns(table)[:1]
+                                       if "force" in missing))
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         if "time" in found:  # a step table's rows may repeat a step; a record's are samples

@@ -2010,6 +2010,17 @@ def _refuse_mega_or_milli(table: RawTable, column: Column) -> None:
                      f"{column.role}={text})")
 
 
+def weighed_columns(table: RawTable) -> list[tuple[str, str]]:
+    """The headers whose unit is a mass (``Weight (kg)``: a scale, or a load cell's display in
+    kg, shows the mass whose weight it holds), each with the force unit of that weight."""
+    out = []
+    for header in table.header:
+        unit = parse_unit(parse_header(header)[1] or "") if header else None
+        if unit is not None and unit.dimensionality == registry().Unit("kg").dimensionality:
+            out.append((header, _weight_unit(unit)))
+    return out
+
+
 def _weight_unit(mass) -> str:
     """The force unit of the weight of ``mass``, a pint unit of mass: ``kgf`` for kg, ``gf``
     for g, ``lbf`` for lb (or lbs)."""

@@ -2354,6 +2354,14 @@ def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
      "cell shows the weight it holds, give --units force=gf"),
     ("P,Load (lbs)\n1,2\n", [], "if the load cell shows the weight it holds, give --units "
      "force=lbf"),
+    # a scale's column, named by no word of a force: told only "no force column"
+    ("Pressure [bar],Weight (kg)\n1,2\n", [], "no force column among 'Pressure [bar]', "
+     "'Weight (kg)': name it with --columns force=COLUMN (and --units force=UNIT); 'Weight "
+     "(kg)' holds a mass: a scale's, or a load cell showing the weight it holds, is read with "
+     "--columns force='Weight (kg)' --units force=kgf"),
+    ("P [bar];Gewicht [g]\n1;2\n", [], "'Gewicht [g]' holds a mass: a scale's, or a load cell "
+     "showing the weight it holds, is read with --columns force='Gewicht [g]' --units "
+     "force=gf"),
     ("P,F\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
     ("P,F,muscle\n1,2,A\n1,2,B\n", [], "column 'muscle' holds 2 muscles ('A', 'B'): choose one "
      "with --muscle NAME"),
