@@ -100,6 +100,13 @@ if TYPE_CHECKING:
     from mkm.fem.tolerances import Tolerances
 
 REQUIRED_ROLES = ("pressure", "force")
+#: a time column whose first reading is this far from 0 s (Unix time, seconds since 1970) is
+#: counted from its first row: a run folder's times stay within its cells' bound
+#: (:data:`mkm.bench.storage.MAX_CELL_MAGNITUDE`) and keep their milliseconds in 10 digits
+CLOCK_ORIGIN_S = 1e6
+#: such a first reading is said as the moment it is in Unix time between these [s] (2001 and
+#: 2100)
+UNIX_TIME_S = (1e9, 4.1e9)
 #: what to know choosing among columns that each hold a role by their unit
 SEVERAL_BY_UNIT = {"pressure": "the sensor at the muscle, not one upstream of the regulator"}
 #: columns whose values split one table into runs (one muscle state each)
@@ -1197,6 +1204,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                 group.where(int(back[0]) + 1, "time"),
                 found["time"].header, time_s[back[0]] - time_s[back[0] + 1],
                 newest_first=back.size == time_s.size - 1))
+        if abs(time_s[0]) >= CLOCK_ORIGIN_S:
+            handling["time_origin_s"] = origin = float(time_s[0])
+            time_s = time_s - origin
+            moment = datetime.datetime.fromtimestamp(origin, datetime.UTC)
+            notes.append(f"{found['time'].header!r} counted from its first row, {origin:.13g} s"
+                         + (f" (Unix time, {moment:%Y-%m-%d %H:%M:%S} UTC)"
+                            if UNIX_TIME_S[0] <= origin <= UNIX_TIME_S[1] else ""))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
     record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)

@@ -1309,7 +1309,7 @@ def parse_header(text: str) -> tuple[str, str | None]:
         if marked and _PRESSURE_MARK.fullmatch(unit):
             return (_name(_WORDS.split(marked.group("name"))),
                     f"{marked.group('unit')}({unit})")
-        return _name(_WORDS.split(name)), unit or None
+        return _name(_WORDS.split(name)), _without_origin(unit) or None
     words = [w for w in _WORDS.split(text) if w]
     if len(words) == 1 and words[0].lower() in CLOCK_NAMES:
         return words[0].lower(), CLOCK_NAMES[words[0].lower()]
@@ -1325,6 +1325,26 @@ def parse_header(text: str) -> tuple[str, str | None]:
             continue
         return rest, word
     return _name(words), None
+
+
+#: what a time column's brackets may say besides its unit: the zone its clock reads
+#: (``Time (UTC)``, ``Zeit (MEZ)``), or the origin it counts from (``ms since epoch``)
+_ZONE_NAME = re.compile(r"(?:utc|gmt|z|local(?: time)?|lokal(?:zeit)?|cet|cest|mez|mesz)"
+                        r"(?:\s*[+-]\s*\d{1,2}(?::?\d\d)?)?", re.IGNORECASE)
+_SINCE = re.compile(r"^(?P<unit>\S+)\s+(?:since|seit|depuis|from)\b.*$", re.IGNORECASE)
+
+
+def _without_origin(unit: str) -> str:
+    """A header's bracketed unit without what it says of a clock besides: a time zone is no
+    unit (its date-times are read as moments either way, its numbers as seconds), and ``ms
+    since epoch`` counts in ms (every time is counted from the first row)."""
+    if _ZONE_NAME.fullmatch(unit.strip()):
+        return ""
+    since = _SINCE.match(unit.strip())
+    if since and (counted := parse_unit(since["unit"])) is not None and \
+            counted.dimensionality == registry().Unit("s").dimensionality:
+        return since["unit"]
+    return unit
 
 
 def _name(words) -> str:

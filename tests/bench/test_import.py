@@ -1623,6 +1623,32 @@ def test_a_labchart_export_without_its_time_is_timed_by_its_interval(interval, r
     assert not (tmp_path / "bad").exists()
 
 
+@pytest.mark.parametrize("header, cell, origin_s", [
+    ("Time (UTC)", lambda s: f"2026-12-05T23:59:{30 + s:06.3f}", None),
+    ("Timestamp (ms since epoch)", lambda s: f"{1796000000000 + round(1000 * s)}", 1.796e9),
+    ("Timestamp", lambda s: f"{1796000000 + s:.3f}", 1.796e9),
+])
+def test_a_clocks_zone_or_origin_is_read_and_its_unix_time_counted_from_the_start(
+        header, cell, origin_s, tmp_path, mkm_cli):
+    # 'UTC' and 'ms since epoch' were taken for the time's unit and refused ("'UTC' is not a
+    # unit of time"), and Unix time was kept as read: the run folder's times beyond its
+    # cells' bound (1e9 s), refused by mkm report and identify as corrupt, and to the second
+    t = np.arange(0.0, 25.0, 0.1)
+    p = np.interp(t, [0, 2, 12, 22, 25], [0, 0, 2.5, 0, 0])
+    path = tmp_path / "clock.csv"
+    pd.DataFrame({header: [cell(s) for s in t], "P (bar)": p,
+                  "F (N)": thickwall_N(p, 0.0)}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert f"{header!r} -> time [" in err
+    # every time counted from the first row, to the file's millisecond (float64 holds Unix
+    # time to 0.2 us)
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=5e-4)
+    assert run.meta.imported_from.get("time_origin_s") == origin_s
+    assert ((f"{header!r} counted from its first row, 1796000000 s (Unix time, 2026-11-30 "
+             "00:53:20 UTC)") in err) is (origin_s is not None)
+    _scores(tmp_path, [run])  # read back by mkm report
+
+
 @pytest.mark.parametrize("x_columns, heading, x_cell", [
     ("No", "Druck\tKraft\tComment", None),  # LabVIEW's 'X Value Columns: No'
     ("One", "X_Value\tDruck\tKraft\tComment", ""),  # its 'Empty time column'
@@ -2770,8 +2796,10 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
     t = np.arange(0.0, 20.0, 0.5)
     t[20:] -= jump_s
     table = tmp_path / "record.csv"
+    # the forces read after the step back other than those read at those times before (alike,
+    # the rows would be rows pasted twice)
     pd.DataFrame({"t [s]": 7000.0 + t, "P [bar]": np.where(t > 5, 1.0, 0.0),
-                  "F [N]": 0.0}).to_csv(table, index=False)
+                  "F [N]": 0.1 * np.arange(t.size)}).to_csv(table, index=False)
     code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
                             str(tmp_path / "runs")])
     assert code == 2 and err.count("\n") == 1

@@ -49,6 +49,10 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     ("t_min", "t", "min"), ("Zeit_min", "zeit", "min"),
     # an Arduino sketch's header naming the call it logs: was a time in seconds
     ("millis()", "millis", "ms"), ("micros()", "micros", "us"),
+    # a clock's zone or origin in its brackets: refused as no unit of time
+    ("Time (UTC)", "time", None), ("Zeit (MEZ)", "zeit", None), ("Time [UTC+01:00]", "time", None),
+    ("Timestamp (ms since epoch)", "timestamp", "ms"), ("t (s since 1970-01-01)", "t", "s"),
+    ("Zeit [ms seit Start]", "zeit", "ms"), ("F (N since tare)", "f", "N since tare"),
 ])
 def test_headers_in_common_spellings(header, name, unit):
     assert parse_header(header) == (name, unit)
