@@ -1469,6 +1469,14 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             steps, step_of, width = series.ramp_steps(time_s, pressure, force)
             handling["steps_from"] = (f"quasi-static bins of {width:.3g} bar, rising and "
                                       "falling branches apart")
+            twentieth = max(float(np.ptp(pressure)) / series.RAMP_BINS,
+                            series.RAMP_MIN_BIN_BAR)
+            if steps and width > twentieth * (1.0 + 1e-9):
+                apart = float(np.median(np.abs(np.diff(pressure))[step_of[1:] >= 0]))
+                notes.append(f"bins of {width:.3g} bar, {width / twentieth:g} times a "
+                             f"twentieth of its range: its samples lie {apart:.2g} bar apart "
+                             "on the sweeps (the median), and narrower bins would hold one "
+                             "each, left out")
         if not steps:
             apart = float(np.median(np.diff(time_s))) if time_s.size > 1 else math.nan
             raise ValueError(f"{group.named}: no step found in the time series (pressure "

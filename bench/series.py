@@ -50,6 +50,11 @@ VENTED_THRESHOLD_BAR = 0.02
 #: quasi-static bins of a ramp: this many over its pressure range, at least this wide [bar]
 RAMP_BINS = 20
 RAMP_MIN_BIN_BAR = 0.02
+#: ... widened by these factors in turn until this share of the samples at most is in no bin
+#: (a bin of one sample is left out: a slow logger on a fast sweep, 1 Hz at 0.2 bar/s, has one
+#: sample per bin, and its bins of two by chance alone were kept)
+RAMP_WIDENING = (1.0, 1.5, 2.0, 3.0, 4.0, 6.0)
+RAMP_LEFT_OUT_SHARE = 0.1
 #: the fit of the rise's start looks this far above the rest [bar]
 RISE_WINDOW_BAR = 0.05
 #: a tare from fewer samples than this is said to be short
@@ -512,9 +517,24 @@ def _settle_index(t, f, p, level_bar, config) -> tuple[int, bool]:
 
 def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndarray, float]:
     """The quasi-static points of a ramp (module docstring), each sample's step (-1: none),
-    and the bin width [bar]."""
+    and the bin width [bar]: a twentieth of the pressure's range, or wider
+    (:data:`RAMP_WIDENING`) where that leaves more than :data:`RAMP_LEFT_OUT_SHARE` of the
+    samples in bins of one."""
     low, high = float(pressure_bar.min()), float(pressure_bar.max())
-    width = max((high - low) / RAMP_BINS, RAMP_MIN_BIN_BAR)
+    base = max((high - low) / RAMP_BINS, RAMP_MIN_BIN_BAR)
+    for factor in RAMP_WIDENING:
+        records, step_of = _ramp_bins(time_s, pressure_bar, force_N, low, base * factor)
+        if np.mean(step_of < 0) <= RAMP_LEFT_OUT_SHARE:
+            break
+    return records, step_of, base * factor
+
+
+def _ramp_bins(time_s, pressure_bar, force_N, low: float,
+               width: float) -> tuple[list[StepRecord], np.ndarray]:
+    """:func:`ramp_steps`'s points in bins of ``width`` [bar] from ``low``, and each sample's
+    step (-1: in a bin of one)."""
+    # a twentieth of the range: 20 bins, not 21 for the rounding of the division
+    bins = max(math.ceil((float(pressure_bar.max()) - low) / width - 1e-9), 1)
     step_of = np.full(time_s.size, -1)
     records: list[StepRecord] = []
     repeats = {"up": 0, "down": 0}
@@ -525,7 +545,7 @@ def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndar
         p = pressure_bar[part]
         if p.size == 0:
             continue
-        index = np.floor((p - low) / width).clip(0, RAMP_BINS - 1).astype(int)
+        index = np.floor((p - low) / width).clip(0, bins - 1).astype(int)
         # each bin one stretch of time: a sample the noise drops back a bin stays in this one
         index = np.maximum.accumulate(index) if direction == "up" else \
             np.minimum.accumulate(index)
@@ -543,4 +563,4 @@ def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndar
                 k, direction, repeat, round(low + (b + 0.5) * width, 4), hold.pressure_mean,
                 hold.mean, hold.std, hold.n, True, 0.0, float(time_s[members[0]]),
                 float(time_s[members[-1]]), math.nan))
-    return records, step_of, width
+    return records, step_of

@@ -1307,6 +1307,35 @@ def test_a_load_cell_zeroed_pressurised_without_a_0_bar_reading_is_said(timed, t
                                thickwall_N(given.steps["pressure_bar_mean"], 0.0), atol=0.06)
 
 
+def test_a_slow_loggers_ramp_is_binned_so_that_every_sample_counts(tmp_path, mkm_cli):
+    # 1 Hz on sweeps of 0.2 bar/s to 4 bar and back, three cycles: bins of a twentieth of the
+    # range (0.2 bar) held one sample each, left out, and only those two fell in by the noise
+    # were kept: 57 of the 127 samples in no step, which ones by chance
+    rng = np.random.default_rng(4)
+    t = np.arange(0.0, 127.0, 1.0)
+    p = np.interp(t, [0, 2, 22, 42, 62, 82, 102, 122, 127], [0, 0, 4, 0, 4, 0, 4, 0, 0])
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.04, 0.0, 30.0)
+    path = tmp_path / "logger_1hz.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p + rng.normal(0, 0.004, t.size),
+                  "F (N)": truth + rng.normal(0, 0.5, t.size)}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    # the range's twentieth (0.2 bar, a sample's step) widened 1.5, 2 or 3 times
+    width = float(re.search(r"bins of ([\d.]+) bar", run.meta.imported_from["steps_from"])[1])
+    assert width in (0.3, 0.4, 0.6)
+    assert (f"bins of {width:g} bar, {width / 0.2:g} times a twentieth of its range: its "
+            "samples lie 0.2 bar apart on the sweeps (the median), and narrower bins would hold "
+            "one each, left out") in err
+    # at most a tenth of the samples left out
+    assert (run.samples["step"] < 0).sum() <= 0.1 * t.size
+    # three cycles, each branch most of its bins of 4 bar (a bin of one sample left out)
+    branches = run.steps.groupby(["direction", "repeat"]).size()
+    assert len(branches) == 6 and branches.between(4 / width - 3, 4 / width + 1).all()
+    for step in run.steps.itertuples():  # each its samples' mean, within 4 standard errors
+        inside = (run.samples["step"] == step.step).to_numpy()
+        assert step.force_N_mean == pytest.approx(truth[inside].mean(),
+                                                  abs=0.2 + 4 * 0.5 / np.sqrt(step.n))
+
+
 def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm_cli):
     # 1 -> 2.5 -> 1 bar, never vented: the force at 1 bar is the muscle's, not the zero
     t = np.arange(0.0, 20.0, 0.01)
