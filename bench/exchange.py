@@ -78,6 +78,7 @@ from mkm.bench.tables import (
     unread_columns,
     unread_time_columns,
     volts_header,
+    weighed_columns,
     with_milliseconds,
     without_blank_rows,
     without_repeated_rows,
@@ -99,6 +100,13 @@ if TYPE_CHECKING:
     from mkm.fem.tolerances import Tolerances
 
 REQUIRED_ROLES = ("pressure", "force")
+#: a time column whose first reading is this far from 0 s (Unix time, seconds since 1970) is
+#: counted from its first row: a run folder's times stay within its cells' bound
+#: (:data:`mkm.bench.storage.MAX_CELL_MAGNITUDE`) and keep their milliseconds in 10 digits
+CLOCK_ORIGIN_S = 1e6
+#: such a first reading is said as the moment it is in Unix time between these [s] (2001 and
+#: 2100)
+UNIX_TIME_S = (1e9, 4.1e9)
 #: what to know choosing among columns that each hold a role by their unit
 SEVERAL_BY_UNIT = {"pressure": "the sensor at the muscle, not one upstream of the regulator"}
 #: columns whose values split one table into runs (one muscle state each)
@@ -347,8 +355,8 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
         row counter, :func:`mkm.bench.tables.counts_rows`): row ``k`` at ``k / sample_rate_hz``
         seconds (:func:`mkm.bench.tables.timed_rows`), a time series; refused for a table with
         a time column, for ``mkm export``'s workbook and with ``join``. A LabChart export
-        without its time column is timed so by its header's ``Interval=`` (a rate given must
-        agree with it).
+        without its time column is timed so by its header's ``Interval=``, a LabVIEW
+        measurement file by its ``Delta_X`` (a rate given must agree with it).
     between_files_s : float, optional
         Several files whose clocks each restart: the seconds from one file's last sample to
         the next one's first (default: one sample interval, each hold's creep timed from its
@@ -422,13 +430,14 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
         counter = found.pop("time").header if counts_rows(table, found.get("time")) else None
         rate_hz, rate_from = sample_rate_hz, "--sample-rate"
         if "time" not in found and table.interval is not None:
-            # a LabChart export saved without its time column: its header states the rate
+            # a LabChart export or a LabVIEW measurement file saved without its time column:
+            # its header states the rate
             written, interval_s = table.interval
-            rate_from = f"the header's Interval= {written}"
+            rate_from = f"the header's {written}"
             if rate_hz is not None and not math.isclose(rate_hz * interval_s, 1.0,
                                                         rel_tol=1e-9):
                 raise ValueError(f"--sample-rate {rate_hz:g} Hz: {table.name}'s header states "
-                                 f"Interval= {written}, {1.0 / interval_s:g} Hz: expected the "
+                                 f"{written}, {1.0 / interval_s:g} Hz: expected the "
                                  "rate its rows were logged at; without --sample-rate the "
                                  "header's is taken")
             rate_hz = 1.0 / interval_s
@@ -484,7 +493,12 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
                                         if parse_header(h)[1] else
                                         f"; by its name, {h!r} is {why}, no reading")
                                        + f": --columns {missing[0]}={h!r} reads it"
-                                       for h, why in unread_columns(table, missing[0])[:1]))
+                                       for h, why in unread_columns(table, missing[0])[:1])
+                             + "".join(f"; {h!r} holds a mass: a scale's, or a load cell "
+                                       "showing the weight it holds, is read with --columns "
+                                       f"force={h!r} --units force={weight}"
+                                       for h, weight in weighed_columns(table)[:1]
+                                       if "force" in missing))
         table = without_blank_rows(without_summary_rows(table),
                                    [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
         if "time" in found:  # a step table's rows may repeat a step; a record's are samples
@@ -1041,24 +1055,45 @@ def _rest_spread_N(force, *rests) -> float:
     return min(spreads, default=math.nan)
 
 
-def _zero_drift(time_s, pressure, force, rest, handling) -> list[str]:
+def _zero_drift(group: _Group, time_s, pressure, force, rest, handling):
     """The note (if any) of a record that ends vented at another zero than it started: the
     drift recorded as ``zero_drift_N`` (end less start), said when it is beyond 4 standard
-    errors of the two rests' means."""
+    errors of the two rests' means. Where the force steps by that drift within a hold
+    (:func:`mkm.bench.series.zero_step`: the load cell zeroed again mid-record), each sample is
+    tared at the zero it was logged with, the start's before the step and the end's from it on.
+    (notes, the zero at every sample or None)."""
     end = series.end_rest(time_s, pressure, force)
     if (end.rest.start <= rest.rest.stop or end.pressure_bar > series.VENTED_THRESHOLD_BAR
             or not (math.isfinite(end.std_N) and math.isfinite(rest.std_N))):
-        return []
+        return [], None
     drift = end.force_N - rest.force_N
     handling["zero_drift_N"] = drift
     noise = 4.0 * math.hypot(end.std_N, rest.std_N)
     if abs(drift) <= noise:
-        return []
-    return [f"the force vented at the end reads {drift:+.3g} N from the zero at the start "
-            f"(beyond the rests' noise, {noise:.2g} N): a load cell that drifted, or a muscle "
-            "that did not come back; every step keeps the start's zero: where the cell drifted "
-            f"(the muscle vented pulls nothing), --tare {LINEAR_TARE} takes the zero linearly "
-            "in time between the two rests"]
+        return [], None
+    stepped = series.zero_step(pressure, force, slice(rest.rest.stop, end.rest.start), drift,
+                               _rest_spread_N(force, rest, end))
+    if stepped is None:
+        return [f"the force vented at the end reads {drift:+.3g} N from the zero at the start "
+                f"(beyond the rests' noise, {noise:.2g} N): a load cell that drifted, or a "
+                "muscle that did not come back; every step keeps the start's zero: where the "
+                f"cell drifted (the muscle vented pulls nothing), --tare {LINEAR_TARE} takes "
+                "the zero linearly in time between the two rests"], None
+    k, step = stepped
+    at_s, held_bar = float(time_s[k]), float(np.median(pressure[k:k + series.ZERO_STEP_SAMPLES]))
+    cell = group.cell(k, "force")
+    handling["zero_step"] = {"at_s": at_s, "cell": cell, "step_N": step,
+                             "pressure_bar": held_bar}
+    closing = (f"the mean force of the {end.rest.stop - end.rest.start} sample(s) of the vented "
+               "rest that ends the record")
+    handling["tare"] += f", to {at_s:.4g} s; from there ({cell}) {closing}, {end.force_N:.4g} N"
+    zero = np.where(np.arange(force.size) < k, rest.force_N, end.force_N)
+    return [f"tare {rest.force_N:.4g} N subtracted to {at_s:.4g} s, {end.force_N:.4g} N from "
+            f"there ({closing}): the force steps by {step:+.4g} N at {at_s:.4g} s (cell {cell}) "
+            f"while the pressure holds at {held_bar:.3g} bar, as far as the force vented at the "
+            "end reads from the zero at the start: the load cell zeroed again there (its tare "
+            "pressed with the muscle pulling), each sample tared at the zero it was logged "
+            f"with; --tare {rest.force_N:.4g} keeps the start's zero throughout"], zero
 
 
 def _table_zero_drift(force, zero: float, closing_rows, declared, handling) -> list[str]:
@@ -1104,6 +1139,18 @@ def _linear_tare(group: _Group, time_s, pressure, force, rest, handling):
                         "(the vented rest that ends the record), a drift of "
                         f"{end.force_N - rest.force_N:+.3g} N")
     return rest.force_N, rest.force_N + slope * (np.asarray(time_s) - t_start)
+
+
+def _reading(force_N: float, force: np.ndarray) -> str:
+    """What a table or record without a 0 bar reading reads where its rising branch starts,
+    ``force_N``: one within 1 % of its largest force of 0 N is named as a load cell zeroed
+    there, pressurised, may read it (every force then low by the pull it was zeroed at)."""
+    said = f"reading {force_N:.4g} N"
+    if abs(force_N) > 0.01 * float(np.nanmax(np.abs(force))):
+        return said
+    return (f"{said}: a load cell zeroed there with the muscle pressurised, every force then "
+            "low by its pull there (--tare minus that pull restores them), or a muscle slack "
+            "there")
 
 
 def _never_rises(pressure_bar: np.ndarray) -> bool:
@@ -1157,6 +1204,13 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
                 group.where(int(back[0]) + 1, "time"),
                 found["time"].header, time_s[back[0]] - time_s[back[0] + 1],
                 newest_first=back.size == time_s.size - 1))
+        if abs(time_s[0]) >= CLOCK_ORIGIN_S:
+            handling["time_origin_s"] = origin = float(time_s[0])
+            time_s = time_s - origin
+            moment = datetime.datetime.fromtimestamp(origin, datetime.UTC)
+            notes.append(f"{found['time'].header!r} counted from its first row, {origin:.13g} s"
+                         + (f" (Unix time, {moment:%Y-%m-%d %H:%M:%S} UTC)"
+                            if UNIX_TIME_S[0] <= origin <= UNIX_TIME_S[1] else ""))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
     record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)
@@ -1335,17 +1389,20 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             + (f"it starts held at {zero_at:.3g} bar" if zero_at > series.VENTED_THRESHOLD_BAR
                else f"only {rest.rest.stop} {what}(s) before the pressure rises"))
     elif tare == "auto" and not timed and not zero_at <= series.VENTED_THRESHOLD_BAR:
-        zero, handling["tare"] = 0.0, "none: the table has no 0 bar row"
+        lowest, zero = zero, 0.0
+        handling["tare"] = "none: the table has no 0 bar row"
         # a load cell's offset would stay in every force unsaid, unless the table marks where
         # the muscle is slack (its zero: a published map's 0 N entries)
         if not ("slack" in found and flags(table, found["slack"])[group.rows].any()):
             notes.append(f"no tare: the table has no 0 bar row (its rising branch starts at "
-                         f"{zero_at:g} bar): its forces as given; --tare N gives one")
+                         f"{zero_at:g} bar, {_reading(lowest, force)}): its forces as given; "
+                         "--tare N gives one")
     elif tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR:
         # the force of a record that starts pressurised is the muscle's pull, not the zero
         zero, handling["tare"] = 0.0, (f"none: the record has no 0 bar reading (its rising "
                                        f"branch starts at {zero_at:g} bar)")
-        notes.append(f"no tare: {handling['tare'][6:]}; --tare N gives one")
+        notes.append(f"no tare: {handling['tare'][6:-1]}, {_reading(rest.force_N, force)}); "
+                     "--tare N gives one")
     elif tare == "auto" and timed:
         n = rest.rest.stop
         rises_s = time_s[min(n, time_s.size - 1)] - time_s[0]
@@ -1356,7 +1413,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             notes.append(f"tare from only {n} sample(s): the pressure rises {rises_s:.3g} s "
                          "into the record; a vented rest of a second or more before it, or "
                          "--tare N, gives a surer zero")
-        drift = _zero_drift(time_s, pressure, force, rest, handling)
+        drift, line = _zero_drift(group, time_s, pressure, force, rest, handling)
     elif tare == "auto" and record:
         handling["tare"] = f"mean force of the {rest.rest.stop} row(s) before the pressure rises"
         handling["tare_std_N"] = rest.std_N
@@ -1376,7 +1433,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     handling["tare_N"] = zero
     if line is not None:
         force = force - line
-        notes.append(f"tare {zero:.4g} N at the start subtracted, then {handling['tare']}")
+        if "zero_step" not in handling:  # its note says both zeros
+            notes.append(f"tare {zero:.4g} N at the start subtracted, then {handling['tare']}")
     elif zero:
         force = force - zero
         notes.append(f"tare {zero:.4g} N subtracted ({handling['tare']})")
@@ -1411,6 +1469,14 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             steps, step_of, width = series.ramp_steps(time_s, pressure, force)
             handling["steps_from"] = (f"quasi-static bins of {width:.3g} bar, rising and "
                                       "falling branches apart")
+            twentieth = max(float(np.ptp(pressure)) / series.RAMP_BINS,
+                            series.RAMP_MIN_BIN_BAR)
+            if steps and width > twentieth * (1.0 + 1e-9):
+                apart = float(np.median(np.abs(np.diff(pressure))[step_of[1:] >= 0]))
+                notes.append(f"bins of {width:.3g} bar, {width / twentieth:g} times a "
+                             f"twentieth of its range: its samples lie {apart:.2g} bar apart "
+                             "on the sweeps (the median), and narrower bins would hold one "
+                             "each, left out")
         if not steps:
             apart = float(np.median(np.diff(time_s))) if time_s.size > 1 else math.nan
             raise ValueError(f"{group.named}: no step found in the time series (pressure "

@@ -50,6 +50,11 @@ VENTED_THRESHOLD_BAR = 0.02
 #: quasi-static bins of a ramp: this many over its pressure range, at least this wide [bar]
 RAMP_BINS = 20
 RAMP_MIN_BIN_BAR = 0.02
+#: ... widened by these factors in turn until this share of the samples at most is in no bin
+#: (a bin of one sample is left out: a slow logger on a fast sweep, 1 Hz at 0.2 bar/s, has one
+#: sample per bin, and its bins of two by chance alone were kept)
+RAMP_WIDENING = (1.0, 1.5, 2.0, 3.0, 4.0, 6.0)
+RAMP_LEFT_OUT_SHARE = 0.1
 #: the fit of the rise's start looks this far above the rest [bar]
 RISE_WINDOW_BAR = 0.05
 #: a tare from fewer samples than this is said to be short
@@ -260,6 +265,55 @@ def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) 
                 settled)
 
 
+#: a zero that steps (:func:`zero_step`) is judged over this many samples either side
+ZERO_STEP_SAMPLES = 5
+#: ... the pressure's medians either side within this [bar]: held, the step not the muscle's
+ZERO_STEP_HELD_BAR = 0.01
+
+
+def zero_step(pressure_bar: np.ndarray, force_N: np.ndarray, within: slice, drift_N: float,
+              spread_N: float) -> tuple[int, float] | None:
+    """Where a record's zero stepped: the sample within ``within`` from which the force's
+    median over :data:`ZERO_STEP_SAMPLES` samples differs most from the median of those before
+    it, in the sense of ``drift_N`` (the closing rest's zero less the starting one's), while
+    the pressure holds (its medians within :data:`ZERO_STEP_HELD_BAR`), where that step is the
+    drift (within a tenth of it and 4 of its standard errors), 20 times the noise of a sample's
+    difference from the next or more (``spread_N``, the load cell's spread at rest), and made
+    from one sample to the next: a load cell zeroed again mid-record, its tare pressed with the
+    muscle pulling. A drift in time shows no such step. (index of the step's first sample, the
+    step [N]) or None."""
+    w = ZERO_STEP_SAMPLES
+    start, stop = max(within.start or 0, w), min(within.stop, force_N.size - w + 1)
+    if stop <= start or not math.isfinite(spread_N) or not drift_N:
+        return None
+    windows = np.lib.stride_tricks.sliding_window_view
+    f = np.median(windows(force_N, w), axis=1)  # f[k]: the median of samples k to k + w - 1
+    p = np.median(windows(pressure_bar, w), axis=1)
+    k = np.arange(start, stop)
+    steps = f[k] - f[k - w]
+    held = np.abs(p[k] - p[k - w]) <= ZERO_STEP_HELD_BAR
+    along = np.where(held, steps * math.copysign(1.0, drift_N), -np.inf)
+    best = int(np.argmax(along))
+    # the standard error of the difference of two medians of w samples (1.25 a mean's)
+    se = 1.25 * spread_N * math.sqrt(2.0 / w)
+    step = float(steps[best])
+    # a step that large, made from one sample to the next (below), is no noise
+    if (along[best] < 20.0 * math.sqrt(2.0) * spread_N
+            or abs(step - drift_N) > 0.1 * abs(drift_N) + 4.0 * se):
+        return None
+    # the windows either side of the step straddle it from w samples before on: its first
+    # sample is the first past halfway
+    k0 = int(k[best]) - w + 1
+    past = (force_N[k0:k0 + 2 * w - 1] - f[k[best] - w] - step / 2.0) * math.copysign(1.0, step)
+    first = k0 + int(np.argmax(past > 0))
+    # a zero set anew steps from one sample to the next; a force that moves over several (a
+    # ramp's turn through its friction) is no such step
+    if abs(force_N[first] - force_N[first - 1] - step) > 0.1 * abs(step) + 4.0 * math.sqrt(
+            2.0) * spread_N:
+        return None
+    return first, step
+
+
 def settled_start(time_s: np.ndarray, force_N: np.ndarray) -> int | None:
     """The first sample of a rest from which its force's least-squares trend to the end lies
     within :data:`SETTLED_TREND_SE` standard errors of none, leaving
@@ -463,9 +517,24 @@ def _settle_index(t, f, p, level_bar, config) -> tuple[int, bool]:
 
 def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndarray, float]:
     """The quasi-static points of a ramp (module docstring), each sample's step (-1: none),
-    and the bin width [bar]."""
+    and the bin width [bar]: a twentieth of the pressure's range, or wider
+    (:data:`RAMP_WIDENING`) where that leaves more than :data:`RAMP_LEFT_OUT_SHARE` of the
+    samples in bins of one."""
     low, high = float(pressure_bar.min()), float(pressure_bar.max())
-    width = max((high - low) / RAMP_BINS, RAMP_MIN_BIN_BAR)
+    base = max((high - low) / RAMP_BINS, RAMP_MIN_BIN_BAR)
+    for factor in RAMP_WIDENING:
+        records, step_of = _ramp_bins(time_s, pressure_bar, force_N, low, base * factor)
+        if np.mean(step_of < 0) <= RAMP_LEFT_OUT_SHARE:
+            break
+    return records, step_of, base * factor
+
+
+def _ramp_bins(time_s, pressure_bar, force_N, low: float,
+               width: float) -> tuple[list[StepRecord], np.ndarray]:
+    """:func:`ramp_steps`'s points in bins of ``width`` [bar] from ``low``, and each sample's
+    step (-1: in a bin of one)."""
+    # a twentieth of the range: 20 bins, not 21 for the rounding of the division
+    bins = max(math.ceil((float(pressure_bar.max()) - low) / width - 1e-9), 1)
     step_of = np.full(time_s.size, -1)
     records: list[StepRecord] = []
     repeats = {"up": 0, "down": 0}
@@ -476,7 +545,7 @@ def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndar
         p = pressure_bar[part]
         if p.size == 0:
             continue
-        index = np.floor((p - low) / width).clip(0, RAMP_BINS - 1).astype(int)
+        index = np.floor((p - low) / width).clip(0, bins - 1).astype(int)
         # each bin one stretch of time: a sample the noise drops back a bin stays in this one
         index = np.maximum.accumulate(index) if direction == "up" else \
             np.minimum.accumulate(index)
@@ -494,4 +563,4 @@ def ramp_steps(time_s, pressure_bar, force_N) -> tuple[list[StepRecord], np.ndar
                 k, direction, repeat, round(low + (b + 0.5) * width, 4), hold.pressure_mean,
                 hold.mean, hold.std, hold.n, True, 0.0, float(time_s[members[0]]),
                 float(time_s[members[-1]]), math.nan))
-    return records, step_of, width
+    return records, step_of

@@ -251,8 +251,9 @@ class RawTable:
     footer_skipped: list[str] = field(default_factory=list)
     #: what :func:`join_by_time` joined to it: the other table, its columns, the times' origin
     joined: dict = field(default_factory=dict)
-    #: the sampling interval its header block states, as written (LabChart's ``Interval=``,
-    #: ``0.01 s``), and in seconds: its rows' times where it has no time column
+    #: the sampling interval its header block states, as written (LabChart's ``Interval=
+    #: 0.01 s``, a LabVIEW measurement file's ``Delta_X 0.010000``), and in seconds: its rows'
+    #: times where it has no time column
     interval: tuple[str, float] | None = None
     #: what a TDMS file says of itself (``file``), of the group (``group``) and of its
     #: waveforms' time axis (``waveform``): their properties, kept in the run folder
@@ -416,9 +417,11 @@ def _text_table(path: Path, text: str) -> RawTable:
     # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
     parsed = [(n + j, cells) for n, line in lines
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
+    interval = None
     if path.suffix.lower() == ".lvm":
+        interval = _lvm_interval(parsed)
         parsed = _without_later_lvm_headers(path, parsed)
-    interval = _labchart_interval(parsed)
+    interval = interval or _labchart_interval(parsed)
     parsed = _labchart_header(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
                                          for c in cells])
@@ -427,7 +430,19 @@ def _text_table(path: Path, text: str) -> RawTable:
     # its comment lines too, where a lab notes what the columns do not hold
     table = replace(table, preamble=[(n, line.strip()) for n, line in numbered
                                      if n < table.header_row])
+    if path.suffix.lower() == ".lvm":
+        table = _without_empty_x_column(table)
     return replace(table, interval=interval) if interval else table
+
+
+def _without_empty_x_column(table: RawTable) -> RawTable:
+    """A LabVIEW measurement file written with an empty time column (LabVIEW's ``X_Value``
+    heading over blank cells), that column left out: its rows are timed by the channel
+    header's ``Delta_X``, not skipped each for a blank time."""
+    if not table.header or table.header[0] not in ("X_Value", "Time [s]") or any(
+            str(row[0]).strip() for row in table.rows if row):
+        return table
+    return replace(table, header=table.header[1:], rows=[row[1:] for row in table.rows])
 
 
 def _comment(line: str) -> bool:
@@ -511,7 +526,25 @@ def _labchart_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float]
     if unit is None or unit.dimensionality != registry().Unit("s").dimensionality:
         return None
     seconds = float(match["number"].replace(",", ".")) * (1 * unit).to("s").magnitude
-    return (text, seconds) if math.isfinite(seconds) and seconds > 0 else None
+    return (f"Interval= {text}", seconds) if math.isfinite(seconds) and seconds > 0 else None
+
+
+def _lvm_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float] | None:
+    """The sampling interval a LabVIEW measurement file's channel header states (``Delta_X``,
+    one cell per channel, all alike, where ``X_Dimension`` is time), as written and in
+    seconds; None where it has none, several channel headers (segments, each with its own
+    ``X0``: the rows alone do not tell when each began) or one that is no positive time."""
+    labelled = [(cells[0].strip(), [c.strip() for c in cells[1:] if c.strip()])
+                for _, cells in parsed if cells]
+    deltas = [cells for label, cells in labelled if label == "Delta_X"]
+    dimensions = [cells for label, cells in labelled if label == "X_Dimension"]
+    if len(deltas) != 1 or len(dimensions) != 1 or len(set(deltas[0])) != 1 or \
+            {d.lower() for d in dimensions[0]} != {"time"}:
+        return None
+    seconds = plain_number(deltas[0][0], ".")
+    if seconds is None or not (math.isfinite(seconds) and seconds > 0):
+        return None
+    return f"Delta_X {deltas[0][0]}", seconds
 
 
 def _labchart_header(path: Path,
@@ -1063,16 +1096,17 @@ def _footer_start(numbers: list[int], rows: list[list], first_data: int) -> int:
 def _labview_header(header: list[str], titles: list[list]) -> list[str]:
     """A LabVIEW measurement file's column names with what its channel header says: each
     channel's unit (``Y_Unit_Label``, in the channels' order: an x column before each, as
-    ``X_Columns Multi`` writes them, takes none) after its name, and its first x column
-    (``X_Value``) named ``Time [s]`` where the channels' ``X_Dimension`` is time; any other
-    header as it is."""
+    ``X_Columns Multi`` writes them, takes none; a file written with ``X_Columns No`` has
+    none) after its name, and its first x column (``X_Value``) named ``Time [s]`` where the
+    channels' ``X_Dimension`` is time; any other header as it is."""
     block = {str(row[0]).strip(): [str(c).strip() for c in row[1:]] for row in titles if row}
-    if "Y_Unit_Label" not in block or not header or header[0] != "X_Value":
+    if "Y_Unit_Label" not in block or not header:
         return header
     out = list(header)
-    if {d.lower() for d in block.get("X_Dimension", []) if d} == {"time"}:
+    if out[0] == "X_Value" and {d.lower() for d in block.get("X_Dimension", []) if d} == {
+            "time"}:
         out[0] = "Time [s]"
-    channels = [k for k in range(1, len(out)) if out[k] != "X_Value"]
+    channels = [k for k in range(len(out)) if header[k] != "X_Value"]
     for k, unit in zip(channels, block["Y_Unit_Label"], strict=False):
         if out[k] and unit and parse_header(out[k])[1] is None:
             out[k] = f"{out[k]} [{unit}]"
@@ -1275,7 +1309,7 @@ def parse_header(text: str) -> tuple[str, str | None]:
         if marked and _PRESSURE_MARK.fullmatch(unit):
             return (_name(_WORDS.split(marked.group("name"))),
                     f"{marked.group('unit')}({unit})")
-        return _name(_WORDS.split(name)), unit or None
+        return _name(_WORDS.split(name)), _without_origin(unit) or None
     words = [w for w in _WORDS.split(text) if w]
     if len(words) == 1 and words[0].lower() in CLOCK_NAMES:
         return words[0].lower(), CLOCK_NAMES[words[0].lower()]
@@ -1291,6 +1325,26 @@ def parse_header(text: str) -> tuple[str, str | None]:
             continue
         return rest, word
     return _name(words), None
+
+
+#: what a time column's brackets may say besides its unit: the zone its clock reads
+#: (``Time (UTC)``, ``Zeit (MEZ)``), or the origin it counts from (``ms since epoch``)
+_ZONE_NAME = re.compile(r"(?:utc|gmt|z|local(?: time)?|lokal(?:zeit)?|cet|cest|mez|mesz)"
+                        r"(?:\s*[+-]\s*\d{1,2}(?::?\d\d)?)?", re.IGNORECASE)
+_SINCE = re.compile(r"^(?P<unit>\S+)\s+(?:since|seit|depuis|from)\b.*$", re.IGNORECASE)
+
+
+def _without_origin(unit: str) -> str:
+    """A header's bracketed unit without what it says of a clock besides: a time zone is no
+    unit (its date-times are read as moments either way, its numbers as seconds), and ``ms
+    since epoch`` counts in ms (every time is counted from the first row)."""
+    if _ZONE_NAME.fullmatch(unit.strip()):
+        return ""
+    since = _SINCE.match(unit.strip())
+    if since and (counted := parse_unit(since["unit"])) is not None and \
+            counted.dimensionality == registry().Unit("s").dimensionality:
+        return since["unit"]
+    return unit
 
 
 def _name(words) -> str:
@@ -1976,6 +2030,17 @@ def _refuse_mega_or_milli(table: RawTable, column: Column) -> None:
                      f"{column.role}={text})")
 
 
+def weighed_columns(table: RawTable) -> list[tuple[str, str]]:
+    """The headers whose unit is a mass (``Weight (kg)``: a scale, or a load cell's display in
+    kg, shows the mass whose weight it holds), each with the force unit of that weight."""
+    out = []
+    for header in table.header:
+        unit = parse_unit(parse_header(header)[1] or "") if header else None
+        if unit is not None and unit.dimensionality == registry().Unit("kg").dimensionality:
+            out.append((header, _weight_unit(unit)))
+    return out
+
+
 def _weight_unit(mass) -> str:
     """The force unit of the weight of ``mass``, a pint unit of mass: ``kgf`` for kg, ``gf``
     for g, ``lbf`` for lb (or lbs)."""
@@ -2553,28 +2618,39 @@ def check_channel_times(table: RawTable, found: dict[str, Column]) -> None:
 
 
 def without_repeated_rows(table: RawTable, columns: list[Column]) -> RawTable:
-    """``table`` without the rows that repeat the row above in every one of ``columns``, the
+    """``table`` without the rows that repeat an earlier row in every one of ``columns``, the
     time first (its time and readings: a logger that wrote a sample twice, or rows pasted
-    twice), each named in ``repeats_skipped`` (``A12``): counted twice, a sample would halve
+    twice, one by one or as a block), each named in ``repeats_skipped`` (``A12``; ``A52 as
+    A2`` where the row it repeats is not the one above): counted twice, a sample would halve
     the standard errors of its hold, not add a reading. Where some rows share their time with
-    the row above but not their readings (a clock coarser than the sampling, whole seconds at
+    an earlier row but not their readings (a clock coarser than the sampling, whole seconds at
     10 Hz), alike rows may be samples of their own: none is skipped, each named in
     ``times_shared``."""
     indices = [p.index for c in columns for p in c.parts or (c,)]
     rows = table.rows
 
-    def alike(k: int, among) -> bool:
-        return all(str(rows[k][i]).strip() == str(rows[k - 1][i]).strip() for i in among)
+    def alike(k: int, j: int) -> bool:
+        return all(str(rows[k][i]).strip() == str(rows[j][i]).strip() for i in indices)
 
-    same_time = [k for k in range(1, len(rows)) if alike(k, indices[:1])]
-    skipped = [k for k in same_time if alike(k, indices)]
+    first_of_time: dict[str, int] = {}
+    same_time, skipped = [], []
+    for k, row in enumerate(rows):
+        j = first_of_time.setdefault(str(row[indices[0]]).strip(), k)
+        if j < k:  # its time read before: by the row above, or a row further up
+            same_time.append(k)
+            repeated = next((i for i in (k - 1, j) if alike(k, i)), None)
+            if repeated is not None:
+                skipped.append((k, repeated))
     if len(skipped) < len(same_time):
         return replace(table, times_shared=[table.ref(k, indices[0]) for k in same_time])
     if not skipped:
         return table
-    gone = set(skipped)
+    gone = {k for k, _ in skipped}
     keep = [k for k in range(len(rows)) if k not in gone]
-    return replace(table.kept(keep), repeats_skipped=[table.ref(k, indices[0]) for k in skipped])
+    # a repeat of the row above is named alone; one of a row further up, with it
+    return replace(table.kept(keep), repeats_skipped=[
+        table.ref(k, indices[0]) + ("" if k - j == 1 else f" as {table.ref(j, indices[0])}")
+        for k, j in skipped])
 
 
 def _formula(table: RawTable, k: int, column: int) -> str | None:
@@ -2745,8 +2821,11 @@ class Recognition:
             extras.append(f"{len(skipped)} row(s) with a blank cell skipped: "
                           + ", ".join(skipped[:5]) + (", ..." if len(skipped) > 5 else ""))
         if repeats := self.table.repeats_skipped:
-            extras.append(f"{len(repeats)} row(s) repeating the row above (its time and "
-                          "readings) skipped: " + ", ".join(repeats[:5])
+            above = ("the row above (its time and readings)"
+                     if not any(" as " in r for r in repeats) else
+                     "an earlier row (its time and readings: rows pasted twice)")
+            extras.append(f"{len(repeats)} row(s) repeating {above} skipped: "
+                          + ", ".join(repeats[:5])
                           + (", ..." if len(repeats) > 5 else ""))
         if shared := self.table.times_shared:
             extras.append(f"{len(shared)} row(s) with the time of the row above but other "

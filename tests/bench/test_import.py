@@ -82,8 +82,8 @@ def test_kpa_and_lbf_headers(tmp_path, mkm_cli):
     assert recorded["file"] == "lab.csv" and len(recorded["sha256"]) == 64
     assert recorded["tare"] == "none: the table has no 0 bar row"
     # said: a load cell's offset would stay in every force (the table's zero is not known)
-    assert ("no tare: the table has no 0 bar row (its rising branch starts at 0.5 bar): its "
-            "forces as given; --tare N gives one") in err
+    assert ("no tare: the table has no 0 bar row (its rising branch starts at 0.5 bar, reading "
+            f"{force[0]:.4g} N): its forces as given; --tare N gives one") in err
     assert _scores(tmp_path, [run])["max_abs_err_pct"].iloc[0] < 0.01
 
 
@@ -901,6 +901,36 @@ def test_a_zero_that_drifted_linearly_is_taken_out_with_tare_linear(tmp_path, mk
     assert code == 2 and "expected auto, none, linear or a number in N" in err, err
 
 
+def test_a_load_cell_zeroed_again_mid_record_is_tared_at_each_zero(tmp_path, mkm_cli):
+    # the logger's tare pressed at 25 s, the muscle held at 2 bar: every force from there reads
+    # its pull (814 N) and the cell's 3 N low. Kept at the start's zero, the falling steps were
+    # 817 N low and the note's remedy, --tare linear, spread the step over the record as a drift
+    t, p, f, truth = _staircase_10_hz([1.0, 2.0, 2.5, 2.0, 1.0, 0.0], tare_N=3.0)
+    pull_N = float(np.mean(truth[(t >= 24.0) & (t < 25.0)]))
+    logged = f - np.where(t >= 25.0, 3.0 + pull_N, 0.0)
+    path = tmp_path / "rezeroed.csv"
+    pd.DataFrame({"Time [s]": t, "P [bar]": p, "F [N]": logged}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    step = run.meta.imported_from["zero_step"]
+    # the step's first sample, row 251 of the file (its header row 1): cell C252
+    assert step["at_s"] == pytest.approx(25.0) and step["cell"] == "C252"
+    assert step["pressure_bar"] == pytest.approx(2.0, abs=0.01)
+    # the difference of two 5-sample medians of 0.2 N noise: 0.16 N of standard error
+    assert step["step_N"] == pytest.approx(-3.0 - pull_N, abs=4 * 0.16)
+    assert f"{step['step_N']:+.4g}" == "-817.1"  # as run-folder.md quotes it
+    assert (f"the force steps by {step['step_N']:+.4g} N at 25 s (cell C252) while the "
+            "pressure holds at 2 bar, as far as the force vented at the end reads from the zero "
+            "at the start: the load cell zeroed again there") in err, err
+    assert "--tare linear" not in err
+    # every step its muscle's force: within 4 standard errors of its mean and of the rest's
+    # (0.2 N noise over about 50 and 130 samples) and the 0.2 N a hold's edge takes in
+    assert len(run.steps) == 5
+    for hold in run.steps.itertuples():
+        inside = (run.samples["step"] == hold.step).to_numpy()
+        assert hold.force_N_mean == pytest.approx(truth[inside].mean(), abs=0.2 + 4 * 0.2 * (
+            1 / np.sqrt(hold.n) + 1 / np.sqrt(50))), hold
+
+
 @pytest.mark.parametrize("closing_N, accuracy, said", [
     (0.8, [], True), (0.3, [], False), (-0.8, [], True),
     (0.8, ["--accuracy", "force=0.5N+1%"], False),  # within twice the declared 0.5 N
@@ -1248,6 +1278,64 @@ def test_a_ramp_repeated_twice_has_two_rising_and_two_falling_branches(tmp_path,
                                                   abs=0.2 + 4 * 0.3 / np.sqrt(step.n))
 
 
+@pytest.mark.parametrize("timed", [False, True])
+def test_a_load_cell_zeroed_pressurised_without_a_0_bar_reading_is_said(timed, tmp_path,
+                                                                        mkm_cli):
+    # the logger zeroed with the muscle held at 1.5 bar, the file starting there: every force
+    # low by that pull, and the line said only "no tare ... its forces as given"
+    levels = np.array([1.5, 2.0, 2.5, 3.0, 2.5, 2.0, 1.5])
+    pull_N = thickwall_N(1.5, 0.0)
+    path = tmp_path / "zeroed.csv"
+    if timed:  # 10 Hz, each level held 9 s and left in 1 s, from the first sample at 1.5 bar
+        t = np.arange(0.0, 69.0, 0.1)
+        p = np.interp(t, (10.0 * np.arange(7)[:, None] + [0.0, 9.0]).ravel(),
+                      np.repeat(levels, 2))
+        frame = {"Time [s]": t, "P [bar]": p, "F [N]": thickwall_N(p, 0.0) - pull_N}
+    else:
+        frame = {"P [bar]": levels, "F [N]": np.round(thickwall_N(levels, 0.0) - pull_N, 1)}
+    pd.DataFrame(frame).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    what = "the record has no 0 bar reading" if timed else "the table has no 0 bar row"
+    assert (f"no tare: {what} (its rising branch starts at 1.5 bar, reading 0 N: a load cell "
+            "zeroed there with the muscle pressurised, every force then low by its pull there "
+            "(--tare minus that pull restores them), or a muscle slack there)") in err, err
+    assert run.meta.imported_from["tare_N"] == 0.0
+    # given the pull, each force is the muscle's (a table's rounding to 0.1 N)
+    (given,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--tare", f"{-pull_N:.6f}")
+    assert "no tare" not in err
+    np.testing.assert_allclose(given.steps["force_N_mean"],
+                               thickwall_N(given.steps["pressure_bar_mean"], 0.0), atol=0.06)
+
+
+def test_a_slow_loggers_ramp_is_binned_so_that_every_sample_counts(tmp_path, mkm_cli):
+    # 1 Hz on sweeps of 0.2 bar/s to 4 bar and back, three cycles: bins of a twentieth of the
+    # range (0.2 bar) held one sample each, left out, and only those two fell in by the noise
+    # were kept: 57 of the 127 samples in no step, which ones by chance
+    rng = np.random.default_rng(4)
+    t = np.arange(0.0, 127.0, 1.0)
+    p = np.interp(t, [0, 2, 22, 42, 62, 82, 102, 122, 127], [0, 0, 4, 0, 4, 0, 4, 0, 0])
+    truth = force_history(t, np.maximum(thickwall_N(p, 0.0), 0.0), 0.04, 0.0, 30.0)
+    path = tmp_path / "logger_1hz.csv"
+    pd.DataFrame({"t (s)": t, "P (bar)": p + rng.normal(0, 0.004, t.size),
+                  "F (N)": truth + rng.normal(0, 0.5, t.size)}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    # the range's twentieth (0.2 bar, a sample's step) widened 1.5, 2 or 3 times
+    width = float(re.search(r"bins of ([\d.]+) bar", run.meta.imported_from["steps_from"])[1])
+    assert width in (0.3, 0.4, 0.6)
+    assert (f"bins of {width:g} bar, {width / 0.2:g} times a twentieth of its range: its "
+            "samples lie 0.2 bar apart on the sweeps (the median), and narrower bins would hold "
+            "one each, left out") in err
+    # at most a tenth of the samples left out
+    assert (run.samples["step"] < 0).sum() <= 0.1 * t.size
+    # three cycles, each branch most of its bins of 4 bar (a bin of one sample left out)
+    branches = run.steps.groupby(["direction", "repeat"]).size()
+    assert len(branches) == 6 and branches.between(4 / width - 3, 4 / width + 1).all()
+    for step in run.steps.itertuples():  # each its samples' mean, within 4 standard errors
+        inside = (run.samples["step"] == step.step).to_numpy()
+        assert step.force_N_mean == pytest.approx(truth[inside].mean(),
+                                                  abs=0.2 + 4 * 0.5 / np.sqrt(step.n))
+
+
 def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm_cli):
     # 1 -> 2.5 -> 1 bar, never vented: the force at 1 bar is the muscle's, not the zero
     t = np.arange(0.0, 20.0, 0.01)
@@ -1257,8 +1345,8 @@ def test_a_record_that_starts_pressurised_is_not_tared_at_its_pull(tmp_path, mkm
                                                                                   index=False)
     (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "12.2%")
     assert run.meta.imported_from["tare_N"] == 0.0
-    assert ("no tare: the record has no 0 bar reading (its rising branch starts at 1 bar); "
-            "--tare N gives one") in err
+    assert ("no tare: the record has no 0 bar reading (its rising branch starts at 1 bar, "
+            f"reading {thickwall_N(1.0, 0.122):.4g} N); --tare N gives one") in err
     for step in run.steps.itertuples():  # each point the force of its own pressures
         inside = (run.samples["step"] == step.step).to_numpy()
         assert step.force_N_mean == pytest.approx(thickwall_N(p[inside], 0.122).mean(),
@@ -1562,6 +1650,70 @@ def test_a_labchart_export_without_its_time_is_timed_by_its_interval(interval, r
     assert (f"--sample-rate 7 Hz: labchart.txt's header states Interval= {interval}, "
             f"{rate_hz:g} Hz: expected the rate its rows were logged at") in err
     assert not (tmp_path / "bad").exists()
+
+
+@pytest.mark.parametrize("header, cell, origin_s", [
+    ("Time (UTC)", lambda s: f"2026-12-05T23:59:{30 + s:06.3f}", None),
+    ("Timestamp (ms since epoch)", lambda s: f"{1796000000000 + round(1000 * s)}", 1.796e9),
+    ("Timestamp", lambda s: f"{1796000000 + s:.3f}", 1.796e9),
+])
+def test_a_clocks_zone_or_origin_is_read_and_its_unix_time_counted_from_the_start(
+        header, cell, origin_s, tmp_path, mkm_cli):
+    # 'UTC' and 'ms since epoch' were taken for the time's unit and refused ("'UTC' is not a
+    # unit of time"), and Unix time was kept as read: the run folder's times beyond its
+    # cells' bound (1e9 s), refused by mkm report and identify as corrupt, and to the second
+    t = np.arange(0.0, 25.0, 0.1)
+    p = np.interp(t, [0, 2, 12, 22, 25], [0, 0, 2.5, 0, 0])
+    path = tmp_path / "clock.csv"
+    pd.DataFrame({header: [cell(s) for s in t], "P (bar)": p,
+                  "F (N)": thickwall_N(p, 0.0)}).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert f"{header!r} -> time [" in err
+    # every time counted from the first row, to the file's millisecond (float64 holds Unix
+    # time to 0.2 us)
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=5e-4)
+    assert run.meta.imported_from.get("time_origin_s") == origin_s
+    assert ((f"{header!r} counted from its first row, 1796000000 s (Unix time, 2026-11-30 "
+             "00:53:20 UTC)") in err) is (origin_s is not None)
+    _scores(tmp_path, [run])  # read back by mkm report
+
+
+@pytest.mark.parametrize("x_columns, heading, x_cell", [
+    ("No", "Druck\tKraft\tComment", None),  # LabVIEW's 'X Value Columns: No'
+    ("One", "X_Value\tDruck\tKraft\tComment", ""),  # its 'Empty time column'
+])
+def test_a_labview_file_without_its_times_is_timed_by_its_delta_x(x_columns, heading, x_cell,
+                                                                  tmp_path, mkm_cli):
+    # written without an x column, its channels' units in the channel header's Y_Unit_Label
+    # were not read (250 kPa taken for 250 bar), and with an empty one every row was skipped
+    # for its blank time ("has no row to import"); the channel header's Delta_X times the rows
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    channel = ("Channels\t2\t\t\nSamples\t600\t600\t\nDate\t2026/12/05\t2026/12/05\t\n"
+               "Y_Unit_Label\tkPa\tkN\t\nX_Dimension\tTime\tTime\t\n"
+               "X0\t0.0000000000000000E+0\t0.0000000000000000E+0\t\n"
+               "Delta_X\t0.100000\t0.100000\t\n***End_of_Header***\t\t\t\n")
+    x = "" if x_cell is None else f"{x_cell}\t"
+    path = tmp_path / "run 7.lvm"
+    path.write_text("LabVIEW Measurement\t\nWriter_Version\t2\nSeparator\tTab\n"
+                    f"Decimal_Separator\t.\nMultiple_Headers\tNo\nX_Columns\t{x_columns}\n"
+                    "***End_of_Header***\t\n\t\n" + channel + heading + "\n"
+                    + "".join(f"{x}{a * 100:.6f}\t{b / 1000:.6f}\t\n"
+                              for a, b in zip(p, thickwall_N(p, 0.0), strict=True)),
+                    encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    assert ("'Druck [kPa]' -> pressure [kPa -> bar], 'Kraft [kN]' -> force [kN -> N], "
+            "'rows at 10 Hz' -> time [s]") in err
+    assert "rows at 10 Hz by the header's Delta_X 0.100000" in err
+    recorded = run.meta.imported_from
+    assert recorded["sample_rate_from"] == "the header's Delta_X 0.100000"
+    assert recorded["shape"] == "staircase"
+    np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-9)
+    # the holds' levels and forces as written (6 digits of kPa and kN), timed by the settle test
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    np.testing.assert_allclose(run.steps["force_N_mean"], thickwall_N([1.0, 2.0, 2.5], 0.0),
+                               rtol=1e-5)
 
 
 @pytest.mark.parametrize("rate, why", [
@@ -2257,6 +2409,14 @@ def test_an_export_with_a_0_bar_step_is_not_tared_again(tmp_path, mkm_cli):
      "cell shows the weight it holds, give --units force=gf"),
     ("P,Load (lbs)\n1,2\n", [], "if the load cell shows the weight it holds, give --units "
      "force=lbf"),
+    # a scale's column, named by no word of a force: told only "no force column"
+    ("Pressure [bar],Weight (kg)\n1,2\n", [], "no force column among 'Pressure [bar]', "
+     "'Weight (kg)': name it with --columns force=COLUMN (and --units force=UNIT); 'Weight "
+     "(kg)' holds a mass: a scale's, or a load cell showing the weight it holds, is read with "
+     "--columns force='Weight (kg)' --units force=kgf"),
+    ("P [bar];Gewicht [g]\n1;2\n", [], "'Gewicht [g]' holds a mass: a scale's, or a load cell "
+     "showing the weight it holds, is read with --columns force='Gewicht [g]' --units "
+     "force=gf"),
     ("P,F\n1,2\n", ["--columns", "weight=F"], "ROLE one of pressure"),
     ("P,F,muscle\n1,2,A\n1,2,B\n", [], "column 'muscle' holds 2 muscles ('A', 'B'): choose one "
      "with --muscle NAME"),
@@ -2665,8 +2825,10 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
     t = np.arange(0.0, 20.0, 0.5)
     t[20:] -= jump_s
     table = tmp_path / "record.csv"
+    # the forces read after the step back other than those read at those times before (alike,
+    # the rows would be rows pasted twice)
     pd.DataFrame({"t [s]": 7000.0 + t, "P [bar]": np.where(t > 5, 1.0, 0.0),
-                  "F [N]": 0.0}).to_csv(table, index=False)
+                  "F [N]": 0.1 * np.arange(t.size)}).to_csv(table, index=False)
     code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
                             str(tmp_path / "runs")])
     assert code == 2 and err.count("\n") == 1
@@ -2761,6 +2923,39 @@ def test_rows_written_twice_by_a_logger_are_counted_once_and_named(tmp_path, mkm
                                                         strict=True)))
     (kept,), _ = _import(mkm_cli, coarse, *MUSCLE, "--eps", "0")
     assert kept.meta.imported_from["rows_skipped_as_repeats"] == [] and len(kept.samples) == 400
+
+def test_a_block_of_rows_pasted_twice_is_counted_once_and_named(tmp_path, mkm_cli):
+    # rows 150-199 of a record pasted again under row 199 (a spreadsheet's copy and paste):
+    # refused as a clock that goes backwards by 4.9 s, where every row of the block repeats an
+    # earlier one, its time and readings alike
+    rng = np.random.default_rng(5)
+    t = np.arange(0.0, 40.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 40], [0, 0, 1, 1, 2, 2, 0, 0])
+    rows = [f"{a:.1f},{b:.5f},{c:.4f}\n" for a, b, c in
+            zip(t, p, thickwall_N(p, 0.0) + rng.normal(0, 0.3, t.size), strict=True)]
+    header = "Time [s],Pressure [bar],Force [N]\n"
+    once, pasted = tmp_path / "once.csv", tmp_path / "pasted.csv"
+    once.write_text(header + "".join(rows))
+    pasted.write_text(header + "".join(rows[:200] + rows[150:]))
+    (single,), _ = _import(mkm_cli, once, *MUSCLE, "--eps", "0")
+    (run,), err = _import(mkm_cli, pasted, *MUSCLE, "--eps", "0")
+    # the file's row 202 is the record's row 201 again (its header row 1)
+    assert ("50 row(s) repeating an earlier row (its time and readings: rows pasted twice) "
+            "skipped: A202 as A152, A203 as A153, A204 as A154, A205 as A155, A206 as A156, "
+            "...") in err
+    assert run.meta.imported_from["rows_skipped_as_repeats"][-1] == "A251 as A201"
+    pd.testing.assert_frame_equal(run.steps, single.steps)
+    # a second session whose clock restarts, its readings other than the first's: no repeat,
+    # refused as before
+    again = tmp_path / "again.csv"
+    again.write_text(header + "".join(rows) + "".join(
+        f"{a:.1f},{b:.5f},{c + 0.5:.4f}\n" for a, b, c in
+        zip(t, p, thickwall_N(p, 0.0), strict=True)))
+    code, _, err = mkm_cli(["import", str(again), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "bad")])
+    assert code == 2 and "cell A402 (column 'Time [s]'): the time goes backwards by 39.9 s" in err
+    assert not (tmp_path / "bad").exists()
+
 
 def test_rows_sharing_a_coarse_clocks_time_are_kept_and_counted(tmp_path, mkm_cli):
     # a clock in whole seconds at 10 Hz: rows sharing a time with other readings were kept

@@ -49,6 +49,10 @@ PSI_BAR = LBF_N / 0.0254**2 / 1e5
     ("t_min", "t", "min"), ("Zeit_min", "zeit", "min"),
     # an Arduino sketch's header naming the call it logs: was a time in seconds
     ("millis()", "millis", "ms"), ("micros()", "micros", "us"),
+    # a clock's zone or origin in its brackets: refused as no unit of time
+    ("Time (UTC)", "time", None), ("Zeit (MEZ)", "zeit", None), ("Time [UTC+01:00]", "time", None),
+    ("Timestamp (ms since epoch)", "timestamp", "ms"), ("t (s since 1970-01-01)", "t", "s"),
+    ("Zeit [ms seit Start]", "zeit", "ms"), ("F (N since tare)", "f", "N since tare"),
 ])
 def test_headers_in_common_spellings(header, name, unit):
     assert parse_header(header) == (name, unit)
@@ -660,7 +664,7 @@ def test_a_labchart_text_export_is_read_by_its_channel_titles_and_units(timed, t
     else:
         assert "time" not in found and table.decimal == ","
     # its header's sampling interval, as written and in seconds: the rows' times without one
-    assert table.interval == ("0.1 s", pytest.approx(0.1, rel=1e-15))
+    assert table.interval == ("Interval= 0.1 s", pytest.approx(0.1, rel=1e-15))
     # a record stopped and started again: a second block, its header block under the rows
     block = "".join(text.splitlines(keepends=True)[:9])
     with pytest.raises(ValueError, match=re.escape(
