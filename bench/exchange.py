@@ -54,7 +54,6 @@ from mkm.bench.tables import (
     VOLTS_ROLES,
     Recognition,
     Scaling,
-    backwards_message,
     by_unit_columns,
     check_channel_times,
     column_text,
@@ -71,6 +70,7 @@ from mkm.bench.tables import (
     parse_header,
     read_tables,
     recognise,
+    require_time_order,
     several_forces,
     sheet_names,
     taken_columns,
@@ -1198,12 +1198,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     timed = "time" in found
     if timed:
         time_s = group.values("time")
-        back = np.flatnonzero(np.diff(time_s) < 0)
-        if back.size:
-            raise ValueError(backwards_message(
-                group.where(int(back[0]) + 1, "time"),
-                found["time"].header, time_s[back[0]] - time_s[back[0] + 1],
-                newest_first=back.size == time_s.size - 1))
+        require_time_order(time_s, found["time"].header, lambda k: group.where(k, "time"))
         if abs(time_s[0]) >= CLOCK_ORIGIN_S:
             handling["time_origin_s"] = origin = float(time_s[0])
             time_s = time_s - origin

@@ -2339,11 +2339,34 @@ def _elapsed_s(table: RawTable, column: Column, raw: list) -> np.ndarray | None:
     return values - values[0]
 
 
+def require_time_order(times: np.ndarray, header: str, where) -> None:
+    """``ValueError``, one line, where the time column ``header`` of ``times`` [s] goes back;
+    ``where(k)`` names row ``k``'s cell."""
+    back = np.flatnonzero(np.diff(times) < 0)
+    if back.size:
+        k = int(back[0]) + 1
+        raise ValueError(backwards_message(where(k), header, times[k - 1] - times[k],
+                                           newest_first=back.size == times.size - 1,
+                                           swapped=_swapped_rows(times)))
+
+
+def _swapped_rows(times: np.ndarray) -> int:
+    """How many rows are out of place where sorting the times alone mends them: sorted, the
+    steps are the log's own (none under half the median step, none over twice it); 0 where
+    sorting leaves repeats or gaps (a logger restarted, files joined in the wrong order)."""
+    steps = np.diff(np.sort(times))
+    typical = float(np.median(steps)) if steps.size else 0.0
+    if typical <= 0.0 or steps.min() < 0.5 * typical or steps.max() > 2.0 * typical:
+        return 0
+    return int(np.count_nonzero(np.argsort(times, kind="stable") != np.arange(times.size)))
+
+
 def backwards_message(where: str, header: str, jump_s: float,
-                      newest_first: bool = False) -> str:
+                      newest_first: bool = False, swapped: int = 0) -> str:
     """The one line of a time column that goes back by ``jump_s`` [s] at ``where`` (a table
-    and its cell); an hour back is named as a clock put back (summer time's end), and a
-    column whose every row goes back (``newest_first``) as a logger's newest-first export."""
+    and its cell); an hour back is named as a clock put back (summer time's end), a column
+    whose every row goes back (``newest_first``) as a logger's newest-first export, and
+    ``swapped`` rows that sorting puts in step as rows out of order."""
     if newest_first:
         return (f"{where} (column {header!r}): every row is earlier than the one above it, the "
                 "newest first, as some loggers export: expected the samples oldest first; sort "
@@ -2351,8 +2374,10 @@ def backwards_message(where: str, header: str, jump_s: float,
     dst = (" by an hour: a local clock put back at the end of summer time? give the times with "
            "their zone (+02:00, +01:00)" if abs(jump_s - 3600.0) <= 60.0 else
            f" by {jump_s:.4g} s")
+    order = (f"; {swapped} rows are out of order, and sorted by time they follow the log's "
+             "own step: sort the file by its time, ascending" if swapped else "")
     return (f"{where} (column {header!r}): the time goes backwards{dst}: expected samples in "
-            "time order")
+            f"time order{order}")
 
 
 #: a date-time's time zone at its end: ``Z``, ``+01:00``, ``-0500`` or ``UTC``
@@ -2404,13 +2429,9 @@ def join_by_time(table: RawTable, found: dict[str, Column], other: RawTable,
                              f"the {' and '.join(roles)} in {other.name}")
     times = column_values(table, found["time"])
     other_times = column_values(other, other_found["time"])
-    back = np.flatnonzero(np.diff(other_times) < 0)
-    if back.size:
-        column = other_found["time"]
-        raise ValueError(backwards_message(
-            f"{other.name}, cell {other.cell(int(back[0]) + 1, column.index)}", column.header,
-            other_times[back[0]] - other_times[back[0] + 1],
-            newest_first=back.size == other_times.size - 1))
+    column = other_found["time"]
+    require_time_order(other_times, column.header,
+                       lambda k: f"{other.name}, cell {other.cell(k, column.index)}")
     origins = (_time_origin(table, found["time"]), _time_origin(other, other_found["time"]))
     if None not in origins and origins[0][0] == origins[1][0] == "date-time":
         firsts = [str(t.rows[0][f["time"].index]).strip() if t.rows else ""
@@ -3038,10 +3059,8 @@ def _file_clock(table: RawTable, found: dict[str, Column]):
     """A file's times [s] as read and, for clock readings or date-times, the moment [s] of its
     first row (None: seconds counted from any start)."""
     times = column_values(table, found["time"])
-    if times.size and np.any(np.diff(times) < 0):
-        k = int(np.flatnonzero(np.diff(times) < 0)[0]) + 1
-        raise ValueError(backwards_message(table.where(k, found["time"].index),
-                                           found["time"].header, times[k - 1] - times[k]))
+    require_time_order(times, found["time"].header,
+                       lambda k: table.where(k, found["time"].index))
     origin = _time_origin(table, found["time"])
     return times, (origin[1] if origin else None)
 

@@ -2840,6 +2840,24 @@ def test_a_time_that_goes_back_an_hour_is_named_as_a_clock_put_back(jump_s, said
             "time order" in err) is not said
 
 
+def test_rows_out_of_order_are_told_to_be_sorted(tmp_path, mkm_cli):
+    # two pairs of rows swapped (a logger's buffer flushed out of order) were refused as "the
+    # time goes backwards by 0.5 s" with no word that sorting the file mends it
+    t = np.arange(0.0, 20.0, 0.5)
+    order = np.arange(t.size)
+    order[[10, 11]], order[[30, 31]] = order[[11, 10]], order[[31, 30]]
+    table = tmp_path / "record.csv"
+    pd.DataFrame({"t [s]": t, "P [bar]": np.where(t > 5, 1.0, 0.0),
+                  "F [N]": 0.1 * np.arange(t.size)}).iloc[order].to_csv(table, index=False)
+    code, _, err = mkm_cli(["import", str(table), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("cell A13 (column 't [s]'): the time goes backwards by 0.5 s: expected samples in "
+            "time order; 4 rows are out of order, and sorted by time they follow the log's own "
+            "step: sort the file by its time, ascending") in err
+    assert not (tmp_path / "runs").exists()
+
+
 def test_a_record_whose_pressure_never_rises_is_refused(tmp_path, mkm_cli):
     # a minute logged vented (the test not run, or the wrong channel): its gauge's noise was
     # binned into 132 steps of a ramp, a zero from 2 samples, unsaid
