@@ -239,33 +239,23 @@ def _fibres_stretched(model, pressure_bar, D0_mm, t0_mm, eps, braid_EA_N, rigid_
     """The static force [N] of a muscle held at ``eps`` whose braid's fibres stretch by their
     total tension over ``braid_EA_N`` (``rigid_N``: the force of inextensible ones).
 
-    Fibres of ``1 + e`` times their length at a held length ``L`` are the braid of a muscle
-    ``1 + e`` times as long and wide at rest, same angle, at ``1 - (1 - eps) / (1 + e)``: the
-    model is evaluated there, the tube's inner diameter taken with the braid's (its wall as
-    declared: the rubber's share of the force is off by about ``e`` of itself). The fibres
-    carry the muscle's pull and the pressure's end load on the tube's bore, ``(F + P pi
-    r_i^2) / cos theta`` along them (``cos theta = (1 - eps) cos theta0 / (1 + e)``, the braid's
-    radius ``r_o = (1 + e) R_b sin theta / sin theta0``, ``r_i`` from the wall's volume; the
-    wall's own axial force left out): the hoop load is in it, as the braid's geometry ties it
-    to the axial one. The strain solves ``e = T(e) / EA`` at each pressure: the model at
-    ``strains`` strains up to twice the inextensible fibres' ``T(0) / EA``, interpolated
-    between them, iterated from ``T(0) / EA``. The fibres' tension grows with their
-    length about as ``1 + e``, so the iteration contracts by about ``e`` a step; where it does
-    not settle within the strains tabulated, no braid holds the pull and a ValueError says so."""
+    The model is evaluated as the braid of longer fibres
+    (:func:`mkm.fem.thickwall.stretched_braid`) and the fibres' tension is the pull and the
+    pressure's end load along them (:func:`mkm.fem.thickwall.fibre_tension_N`). The strain
+    solves ``e = T(e) / EA`` at each pressure: the model at ``strains`` strains up to twice the
+    inextensible fibres' ``T(0) / EA``, interpolated between them, iterated from ``T(0) / EA``.
+    The fibres' tension grows with their length about as ``1 + e``, so the iteration contracts
+    by about ``e`` a step; where it does not settle within the strains tabulated, no braid holds
+    the pull and a ValueError says so."""
     from scipy.interpolate import CubicSpline
 
-    theta0 = np.deg2rad(float(model.params()["theta0_deg"]))
-    cos0 = math.cos(theta0)
-    braid_mm = D0_mm + 2.0 * t0_mm
-    wall_mm2 = ((D0_mm / 2.0 + t0_mm) ** 2 - (D0_mm / 2.0) ** 2) / (1.0 - eps)  # r_o^2 - r_i^2
-    pressure_MPa = 0.1 * np.asarray(pressure_bar, dtype=float)
+    from mkm.fem.thickwall import fibre_tension_N, stretched_braid
+
+    theta0_deg = float(model.params()["theta0_deg"])
 
     def strain_of(strain, force_N):
-        cos_t = (1.0 - eps) * cos0 / (1.0 + strain)
-        outer_mm2 = (braid_mm * (1.0 + strain) / 2.0) ** 2 * (1.0 - cos_t**2) / (1.0 - cos0**2)
-        bore_mm2 = np.maximum(outer_mm2 - wall_mm2, 0.0)
-        tension_N = np.maximum(force_N + pressure_MPa * math.pi * bore_mm2, 0.0) / cos_t
-        return tension_N / braid_EA_N
+        return fibre_tension_N(force_N, pressure_bar, D0_mm, t0_mm, eps, theta0_deg,
+                               strain) / braid_EA_N
 
     strain = strain_of(0.0, rigid_N)
     grid = np.linspace(0.0, 2.0 * float(np.max(strain)), strains)
@@ -273,8 +263,8 @@ def _fibres_stretched(model, pressure_bar, D0_mm, t0_mm, eps, braid_EA_N, rigid_
         return rigid_N
     table = [rigid_N]
     for e in grid[1:]:
-        p = model.predict(pressure_bar, braid_mm * (1.0 + e) - 2.0 * t0_mm, t0_mm,
-                          1.0 - (1.0 - eps) / (1.0 + e))
+        D0_at_mm, eps_at = stretched_braid(D0_mm, t0_mm, eps, e)
+        p = model.predict(pressure_bar, D0_at_mm, t0_mm, eps_at)
         table.append(np.where(p.valid, p.force_N, 0.0))
     # the wall's share bends with the strain, most near rest: a cubic spline through the
     # strains, where straight lines between them are off by most of a percent of the force

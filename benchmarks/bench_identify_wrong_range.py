@@ -74,7 +74,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import sys
 from pathlib import Path
 
@@ -94,6 +93,7 @@ from mkm.bench.exchange import import_table, parse_accuracy
 from mkm.bench.run import acquire
 from mkm.bench.sim import logged_ramp
 from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.fem.thickwall import fibre_tension_N
 
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubing lag",
@@ -144,12 +144,11 @@ def depart(muscle: dict, departure: str) -> dict:
 
 def fibre_tension_at_top_N(muscle: dict) -> float:
     """The braid's fibres' total tension [N] at the plan's top pressure at eps 0, were they
-    inextensible: the thick-wall pull and the pressure's end load on the bore, along fibres at
-    the rest angle."""
+    inextensible (:func:`mkm.fem.thickwall.fibre_tension_N` of the thick-wall pull)."""
     runs = plan(muscle)
-    end_load_N = 0.1 * runs["pressures_bar"][-1] * math.pi * muscle["D0_mm"] ** 2 / 4
-    return ((runs["eps0_force_N_at_top"] + end_load_N)
-            / math.cos(math.radians(muscle["truth"]["theta0_deg"])))
+    return float(fibre_tension_N(runs["eps0_force_N_at_top"], runs["pressures_bar"][-1],
+                                 muscle["D0_mm"], muscle["t0_mm"], 0.0,
+                                 muscle["truth"]["theta0_deg"]))
 
 
 def true_eps(muscle: dict, declared_eps: float) -> float:

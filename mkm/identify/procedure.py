@@ -925,30 +925,26 @@ def _fibres_column(source, runs, best, tables):
     :data:`FRAME_EPS_STEP` at the largest tension and by their share of it elsewhere, and that
     tension [N]; None where the fit has the tube's geometry or rest length, or no angle.
 
-    Fibres ``1 + e`` times as long at a held length are the braid of a muscle ``1 + e`` times
-    as long and wide (the tube's bore taken with it, its wall as declared) at ``1 - (1 - eps) /
-    (1 + e)``: one sweep per run there. Their tension, all strands along them, is the pull and
-    the pressure's end load on the bore, ``(F + P pi r_i^2) / cos theta``, at the fitted angle
-    (``r_i`` from the braid's radius and the wall's volume: a thin-membrane braid, the wall's
-    own axial force left out)."""
+    One sweep per run of the braid of fibres that much longer
+    (:func:`mkm.fem.thickwall.stretched_braid`); their tension at each pressure is the pull
+    and the pressure's end load along them at the fitted angle
+    (:func:`mkm.fem.thickwall.fibre_tension_N`)."""
+    from mkm.fem.thickwall import fibre_tension_N, stretched_braid
+
     if {"D0_mm", "t0_mm", "L0_mm"} & set(best.names) or "theta0_deg" not in best.values:
         return None
-    cos0 = math.cos(math.radians(float(best.values["theta0_deg"])))
-    tensions, stretched = [], []
-    for (grid, F), run in zip(tables, runs, strict=True):
-        D0_mm, t0_mm, eps = run.geometry
-        braid_mm = D0_mm + 2.0 * t0_mm
-        cos_t = (1.0 - eps) * cos0
-        outer_mm2 = (braid_mm / 2.0) ** 2 * (1.0 - cos_t**2) / (1.0 - cos0**2)
-        wall_mm2 = ((braid_mm / 2.0) ** 2 - (D0_mm / 2.0) ** 2) / (1.0 - eps)
-        bore_mm2 = max(outer_mm2 - wall_mm2, 0.0)
-        tensions.append(np.maximum(F + 0.1 * grid * math.pi * bore_mm2, 0.0) / cos_t)
-        stretched.append(dataclasses.replace(run, muscle={
-            **run.muscle, "D0_mm": braid_mm * (1.0 + FRAME_EPS_STEP) - 2.0 * t0_mm,
-            "eps": 1.0 - (1.0 - eps) / (1.0 + FRAME_EPS_STEP)}))
+    theta0_deg = float(best.values["theta0_deg"])
+    tensions = [fibre_tension_N(F, grid, *run.geometry, theta0_deg)
+                for (grid, F), run in zip(tables, runs, strict=True)]
     top_N = max(float(np.max(T)) for T in tensions)
     if not top_N > 0:
         return None
+    stretched = []
+    for run in runs:
+        D0_mm, t0_mm, eps = run.geometry
+        D0_at_mm, eps_at = stretched_braid(D0_mm, t0_mm, eps, FRAME_EPS_STEP)
+        stretched.append(dataclasses.replace(run, muscle={**run.muscle, "D0_mm": D0_at_mm,
+                                                          "eps": eps_at}))
     changes = [(grid, (np.interp(grid, *moved) - F) * T / top_N) for (grid, F), moved, T in
                zip(tables, source.tables(stretched, best.values), tensions, strict=True)]
     return _hold_change(source, runs, best, changes), top_N
