@@ -790,8 +790,9 @@ def test_the_first_rise_is_the_steps_up_to_the_first_not_above_the_one_before():
 def test_a_rest_length_declared_wrong_is_not_taken_for_a_frame(tmp_path):
     """The same muscle on a rigid frame, its runs declaring a rest length 2 % short (142.7 mm
     for 145.6 mm, the eps declared from it): a misfit that a frame's compliance, growing with
-    the force, does not explain as a rest length does (the same shortening at every force):
-    no frame note, the verdict sends the reader to the rest length."""
+    the force, does not explain as a rest length does (the same shortening at every force), nor
+    do fibres stretching under their tension: no frame or fibres note, the verdict sends the
+    reader to the rest length."""
     import json
 
     from mkm.identify import identify
@@ -806,9 +807,13 @@ def test_a_rest_length_declared_wrong_is_not_taken_for_a_frame(tmp_path):
     result = identify(runs, model="thickwall", search="model")
     assert result.goodness.misfit and result.goodness.frame is None
     assert not [n for n in result.notes if n.startswith("frame: ")]
-    # the check ran, and says why it named no frame: the rest length lowers chi2 further
+    # the check ran, and says why it named no frame nor fibres: the rest length lowers chi2
+    # further than either
     check = result.goodness.frame_check
-    assert check["sweeps"] == 3 and check["rest_length_chi2_lowered"] > check["chi2_lowered"]
+    assert check["sweeps"] == 6 and check["rest_length_chi2_lowered"] > max(
+        check["chi2_lowered"], check["fibres_chi2_lowered"])
+    assert result.goodness.fibres is None
+    assert not [n for n in result.notes if n.startswith("fibres: ")]
     assert "a frame yielding" not in result._verdict_line()
     assert "first, a run declared at its rest length pulls later" in result._verdict_line()
 
