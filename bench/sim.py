@@ -40,7 +40,10 @@ softens on its first loading (``mullins_fraction``, the Mullins effect) pulls th
 stiffer rubber while its pressure rises above every pressure it has fallen from in the run
 (taking it over within :data:`MULLINS_BAND` of that pressure above it), and the truth's at and
 below them: a staircase's first rise pulls less than its repeats at the same pressure, and from
-its top on the muscle is the preconditioned one.
+its top on the muscle is the preconditioned one. A braid whose fibres stretch (``braid_EA_N``,
+their tensile stiffness summed over the strands) is, at each pressure, the braid of fibres
+longer by their tension over it: at the held length its angle is smaller and its diameter
+larger, the force of a muscle further contracted.
 
 A force model that leaves its validity range (Equation 2 beyond eps_max) or predicts a negative
 force gives zero, and so does creep recovery after a pressure drop: the braid goes slack and a
@@ -116,7 +119,7 @@ def static_force_table(config, n: int = 81, first_loading: bool = False,
     params = first_loading_params(config) if first_loading else muscle_params(config)
     return _table(s.model, mesh, m.L0_mm, tuple(sorted(params.items())),
                   *s.truth.geometry(m), m.eps, top, math.ceil((n - 1) * top / fs) + 1,
-                  s.truth.frame_stiffness_N_per_mm)
+                  s.truth.frame_stiffness_N_per_mm, s.truth.braid_EA_N)
 
 
 def muscle_params(config) -> dict[str, float | str]:
@@ -167,14 +170,25 @@ def sensor_inverse_bar(truth, full_scale_bar: float, reading_bar: float) -> floa
 
 
 @functools.lru_cache(maxsize=32)
-def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, top_bar, n, stiffness_N_per_mm):
+def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, top_bar, n, stiffness_N_per_mm,
+           braid_EA_N=None):
     model = _model(model_name, mesh, L0_mm, dict(truth))
     pressure_bar = np.linspace(0.0, top_bar, n)
     prediction = model.predict(pressure_bar, D0_mm, t0_mm, eps)
-    force = np.where(prediction.valid, prediction.force_N, 0.0)
+
+    def force_at(held_eps, rigid_N=None):
+        """The static force [N] at each pressure with the muscle held at ``held_eps``."""
+        if rigid_N is None:
+            p = model.predict(pressure_bar, D0_mm, t0_mm, held_eps)
+            rigid_N = np.where(p.valid, p.force_N, 0.0)
+        if braid_EA_N is None:
+            return rigid_N
+        return _fibres_stretched(model, pressure_bar, D0_mm, t0_mm, held_eps, braid_EA_N,
+                                 rigid_N)
+
+    force = force_at(eps, np.where(prediction.valid, prediction.force_N, 0.0))
     if stiffness_N_per_mm is not None:
-        force = _on_frame(model, pressure_bar, D0_mm, t0_mm, eps, L0_mm, stiffness_N_per_mm,
-                          force)
+        force = _on_frame(force_at, eps, L0_mm, stiffness_N_per_mm, force)
     # the force starts at the threshold with a kink: a knot there, or a hold just above it
     # would read a force interpolated across the kink
     threshold = np.asarray(prediction.extras.get("threshold_pressure_bar", np.nan), dtype=float)
@@ -189,19 +203,17 @@ def _table(model_name, mesh, L0_mm, truth, D0_mm, t0_mm, eps, top_bar, n, stiffn
     return pressure_bar, force
 
 
-def _on_frame(model, pressure_bar, D0_mm, t0_mm, eps, L0_mm, stiffness_N_per_mm, held_N,
-              lengths: int = 6):
+def _on_frame(force_at, eps, L0_mm, stiffness_N_per_mm, held_N, lengths: int = 6):
     """The static force [N] of a muscle held by a frame of ``stiffness_N_per_mm``: its length
     shortens by ``F / k``, so the force at each pressure solves ``F = F_static(P, eps + F /
-    (k L0))``. ``held_N`` is the force at ``eps`` (a rigid frame's); the model is solved at
-    ``lengths - 1`` more eps up to where that force would put it and interpolated linearly in
-    eps between them. The static force falls with eps, so the root is unique in
+    (k L0))``. ``held_N`` is the force at ``eps`` (a rigid frame's); ``force_at(eps)`` gives
+    it at ``lengths - 1`` more eps up to where that force would put it, interpolated linearly
+    in eps between them. The static force falls with eps, so the root is unique in
     ``[0, held_N]``: found by bisection. At the threshold there is no pull and no shortening:
     the threshold stays the rigid frame's."""
     per_N = 1.0 / (stiffness_N_per_mm * L0_mm)  # eps per newton
     grid = np.linspace(eps, eps + float(np.max(held_N)) * per_N, lengths)
-    forces = [held_N] + [np.where(p.valid, p.force_N, 0.0) for p in
-                         (model.predict(pressure_bar, D0_mm, t0_mm, e) for e in grid[1:])]
+    forces = [held_N] + [force_at(e) for e in grid[1:]]
     table = np.maximum(np.array(forces), 0.0)  # (eps, pressure)
     low, high = np.zeros_like(held_N), np.asarray(held_N, dtype=float).copy()
     columns = np.arange(held_N.size)
@@ -209,11 +221,69 @@ def _on_frame(model, pressure_bar, D0_mm, t0_mm, eps, L0_mm, stiffness_N_per_mm,
         middle = 0.5 * (low + high)
         at = np.clip((eps + middle * per_N - grid[0]) / (grid[1] - grid[0]), 0.0,
                      lengths - 1.0) if grid[-1] > grid[0] else np.zeros_like(middle)
-        k = np.minimum(at.astype(int), lengths - 2)
-        static = table[k, columns] + (at - k) * (table[k + 1, columns] - table[k, columns])
+        static = _between(table, at, columns)
         pulls_more = static > middle
         low, high = np.where(pulls_more, middle, low), np.where(pulls_more, high, middle)
     return 0.5 * (low + high)
+
+
+def _between(table, at, columns):
+    """``table``'s rows (one per grid point) interpolated linearly at the fractional row
+    ``at`` of each column."""
+    k = np.minimum(at.astype(int), table.shape[0] - 2)
+    return table[k, columns] + (at - k) * (table[k + 1, columns] - table[k, columns])
+
+
+def _fibres_stretched(model, pressure_bar, D0_mm, t0_mm, eps, braid_EA_N, rigid_N,
+                      strains: int = 6, iterations: int = 100):
+    """The static force [N] of a muscle held at ``eps`` whose braid's fibres stretch by their
+    total tension over ``braid_EA_N`` (``rigid_N``: the force of inextensible ones).
+
+    The model is evaluated as the braid of longer fibres
+    (:func:`mkm.fem.thickwall.stretched_braid`) and the fibres' tension is the pull and the
+    pressure's end load along them (:func:`mkm.fem.thickwall.fibre_tension_N`). The strain
+    solves ``e = T(e) / EA`` at each pressure: the model at ``strains`` strains up to twice the
+    inextensible fibres' ``T(0) / EA``, interpolated between them, iterated from ``T(0) / EA``.
+    The fibres' tension grows with their length about as ``1 + e``, so the iteration contracts
+    by about ``e`` a step; where it does not settle within the strains tabulated, no braid holds
+    the pull and a ValueError says so."""
+    from scipy.interpolate import CubicSpline
+
+    from mkm.fem.thickwall import fibre_tension_N, stretched_braid
+
+    theta0_deg = float(model.params()["theta0_deg"])
+
+    def strain_of(strain, force_N):
+        return fibre_tension_N(force_N, pressure_bar, D0_mm, t0_mm, eps, theta0_deg,
+                               strain) / braid_EA_N
+
+    strain = strain_of(0.0, rigid_N)
+    grid = np.linspace(0.0, 2.0 * float(np.max(strain)), strains)
+    if grid[-1] == 0:  # no tension anywhere
+        return rigid_N
+    table = [rigid_N]
+    for e in grid[1:]:
+        D0_at_mm, eps_at = stretched_braid(D0_mm, t0_mm, eps, e)
+        p = model.predict(pressure_bar, D0_at_mm, t0_mm, eps_at)
+        table.append(np.where(p.valid, p.force_N, 0.0))
+    # the wall's share bends with the strain, most near rest: a cubic spline through the
+    # strains, where straight lines between them are off by most of a percent of the force
+    between = CubicSpline(grid, np.array(table), axis=0)
+    columns = np.arange(strain.size)
+    for _ in range(iterations):
+        force = between(strain)[columns, columns]
+        settled = strain_of(strain, force)
+        step, strain = np.max(np.abs(settled - strain)), settled
+        if np.max(strain) > grid[-1] or step <= 1e-12 + 1e-9 * np.max(strain):
+            break
+    if np.max(strain) > grid[-1] or step > 1e-12 + 1e-9 * np.max(strain):
+        worst = int(np.argmax(strain))
+        raise ValueError(
+            f"sim.truth.braid_EA_N={braid_EA_N:g} N: the braid's fibres do not settle under the "
+            f"muscle's pull (strained past {min(strain[worst], grid[-1]):.3g} at "
+            f"{pressure_bar[worst]:.3g} bar, eps {eps:.3g}): expected fibres stiff enough to "
+            "hold it")
+    return between(strain)[columns, columns]
 
 
 def _model(model_name, mesh, L0_mm, truth):
@@ -234,7 +304,8 @@ def describe_physics(config) -> dict:
                   if v != getattr(m, k)]
     departures += [f"{k} {getattr(s.truth, k):g}" for k in (*INSTRUMENT_BOUNDS,
                                                             "frame_stiffness_N_per_mm",
-                                                            "line_tau_s", "mullins_fraction")
+                                                            "line_tau_s", "mullins_fraction",
+                                                            "braid_EA_N")
                    if getattr(s.truth, k) is not None]
     return {
         "force_model": s.model, "force_model_params": model.params(),

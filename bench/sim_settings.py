@@ -82,7 +82,14 @@ class Truth:
     pressure than on every later loading to it): the truth's rubber is the preconditioned
     one, and above every pressure the muscle has fallen from in the run (on its first rise,
     above none) it is the one of a rubber ``1 / (1 - mullins_fraction)`` times as stiff; each
-    run starts rested, and nothing recovers within it.
+    run starts rested, and nothing recovers within it. The braid: ``braid_EA_N``, its
+    tensile stiffness along its fibres, ``E A`` summed over its strands (a lab measures one
+    strand's force over its strain on a tensile tester and multiplies by the strands it
+    counts): the fibres' total tension over it is their strain, which lengthens every fibre
+    by that fraction, so at a held length the braid is one of longer fibres (a smaller angle
+    to the axis, a larger diameter: the force of a muscle further contracted); polyester and
+    nylon sleeves stretch 0.5-3 % at a muscle's top force, where the models take them as
+    inextensible.
 
     Unset (None): the declared value (``[muscle]``'s angle, rubber and gap where it gives
     them, else the calibrated angle, Silastic S, no gap; a bonded braid, the declared
@@ -109,6 +116,7 @@ class Truth:
     frame_stiffness_N_per_mm: float | None = None
     line_tau_s: float | None = None
     mullins_fraction: float | None = None
+    braid_EA_N: float | None = None
 
     def check(self):
         from mkm.fem.limits import check_theta0, check_value
@@ -129,6 +137,8 @@ class Truth:
         if self.mullins_fraction is not None:
             within("sim.truth.mullins_fraction", self.mullins_fraction, *MULLINS_BOUNDS,
                    "(a fraction of the rubber's stiffness)")
+        if self.braid_EA_N is not None:
+            within("sim.truth.braid_EA_N", self.braid_EA_N, *BRAID_EA_BOUNDS_N, "N")
 
     def model_params(self) -> dict[str, float | str]:
         """The set values the force model takes (angle, rubber, gap, braid)."""
@@ -155,6 +165,9 @@ LINE_TAU_BOUNDS_S = (0.0, 60.0)
 #: a first loading's softening the simulator takes: none to half the rubber's stiffness (filled
 #: rubbers lose up to some 40 % on their first cycle, silicones less)
 MULLINS_BOUNDS = (0.0, 0.5)
+#: a braid's fibre stiffness the simulator takes [N]: a few thin nylon strands (a 1 % strain
+#: under 1 N) to steel wire's
+BRAID_EA_BOUNDS_N = (100.0, 1e9)
 #: the truths the force model takes; the true geometry; the instruments' truths: their bounds
 #: and unit, and the exact instrument's value
 MODEL_FIELDS = ("theta0_deg", "C10_MPa", "C01_MPa", "gap_mm", "braid")

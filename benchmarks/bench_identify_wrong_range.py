@@ -45,6 +45,11 @@ errors at once:
   soften: the control, on which no softening should be named.
 - ``no lag on ramps`` (drawn only when asked for by name): no departure, the ramps of ``tubing
   lag on ramps`` on a correct bench, whether identify names a lag that is not there.
+- ``stretching fibres`` (drawn only when asked for by name): a braid whose fibres stretch
+  0.5-3 % at the plan's top pressure at eps 0 (``[sim.truth] braid_EA_N``, the fibres'
+  tension there, the thick-wall force and the pressure's end load on the bore along them,
+  over the strain drawn): at a held length the stretched braid is one of a smaller angle and
+  a larger diameter, more so the harder it pulls.
 
 The runs are simulated on the FE bench (``sim.model = "axisym"``, the medium mesh), stripped of
 the truth and identified by ``identify(runs)``. Every parameter reported with an interval is
@@ -54,8 +59,9 @@ eps). A draw is ``covered`` when every interval holds the truth, ``warned`` when
 identify printed a misfit line or a warning about the instruments (a creep it cannot tell from
 the load cell's gain), ``SILENT`` when some miss without either, ``refused`` or ``crashed`` as
 there; ``misfit_line`` and ``instrument_warning`` say whether each was printed at all, and
-``frame_check`` the model sweeps the frame check made on a misfit (one per run: of the
-surrogate where the fit searched with it, else of the FE model), ``braid_refit_sweeps`` and
+``frame_check`` the model sweeps the frame check made on a misfit (two per run, the shorter
+held length's and the stretched fibres': of the surrogate where the fit searched with it, else
+of the FE model), ``fibres`` the stretch of the braid's fibres named, ``braid_refit_sweeps`` and
 ``braid_refit_seconds`` the sweeps and seconds of the refits without a creep over before the
 holds start with each braid (one sweep per run and evaluation, up to 7 evaluations
 per braid; 0 where none ran).
@@ -87,12 +93,13 @@ from mkm.bench.exchange import import_table, parse_accuracy
 from mkm.bench.run import acquire
 from mkm.bench.sim import logged_ramp
 from mkm.bench.sim_settings import remove_simulator_settings
+from mkm.fem.thickwall import fibre_tension_N
 
 FIRST_SEED = 20261601
 DEPARTURES = ("gains", "rest length", "sliding braid", "frame compliance", "tubing lag",
               "tubing lag on ramps", "first-cycle softening",
               "first-cycle softening with repeats", "repeats without softening",
-              "no lag on ramps")
+              "no lag on ramps", "stretching fibres")
 #: what ``--departures`` draws by default: the recorded results' set
 DEFAULT_DEPARTURES = DEPARTURES[:3]
 #: the fields of a draw's printed line
@@ -127,9 +134,21 @@ def depart(muscle: dict, departure: str) -> dict:
         out["repeats"] = 2 if departure.endswith("repeats") else 1
     elif departure == "repeats without softening":
         out["repeats"] = 2
+    elif departure == "stretching fibres":
+        out["fibre_strain_at_top"] = float(rng.uniform(0.005, 0.03))
+        truth["braid_EA_N"] = fibre_tension_at_top_N(muscle) / out["fibre_strain_at_top"]
     if departure.endswith("ramps"):
         out["ramp_to_top_s"] = float(rng.uniform(60.0, 120.0))
     return out
+
+
+def fibre_tension_at_top_N(muscle: dict) -> float:
+    """The braid's fibres' total tension [N] at the plan's top pressure at eps 0, were they
+    inextensible (:func:`mkm.fem.thickwall.fibre_tension_N` of the thick-wall pull)."""
+    runs = plan(muscle)
+    return float(fibre_tension_N(runs["eps0_force_N_at_top"], runs["pressures_bar"][-1],
+                                 muscle["D0_mm"], muscle["t0_mm"], 0.0,
+                                 muscle["truth"]["theta0_deg"]))
 
 
 def true_eps(muscle: dict, declared_eps: float) -> float:
@@ -201,6 +220,9 @@ def departure_value(muscle: dict) -> str:
         return f"no lag{ramp}"
     if muscle["departure"].startswith("tubing lag"):
         return f"tubing lag {t['line_tau_s']:.2f} s{ramp}"
+    if muscle["departure"] == "stretching fibres":
+        return (f"fibres of E A {t['braid_EA_N']:.4g} N ({100 * muscle['fibre_strain_at_top']:.2f}"
+                " % at the top pressure)")
     return (f"frame {t['frame_stiffness_N_per_mm']:.4g} N/mm ({muscle['frame_mm_at_capacity']:.2f}"
             " mm at the cell's capacity)")
 
@@ -229,6 +251,8 @@ def one(muscle: dict, out: Path) -> dict:
     judged(row, result, muscle, truth, seconds,
            verdict_line=result.summary().splitlines()[-1],
            frame_check=result.goodness.frame_check if result.goodness else None,
+           fibres=({k: v for k, v in result.goodness.fibres.items() if k not in ("said", "shift")}
+                   if result.goodness and result.goodness.fibres else None),
            softening=next(({k: v for k, v in w.items() if k not in ("said", "verdict")}
                            for w in result.instrument_warnings
                            if w["what"] == "first-cycle softening"), None),
@@ -264,7 +288,8 @@ def summarise(rows: list[dict]) -> list[dict]:
                       "braid_refit_sweeps": sum(r.get("braid_refit_sweeps", 0) for r in mine),
                       "braid_refit_seconds": round(sum(r.get("braid_refit_seconds", 0.0)
                                                        for r in mine), 1),
-                      "softening_named": sum(r.get("softening") is not None for r in mine)})
+                      "softening_named": sum(r.get("softening") is not None for r in mine),
+                      "fibres_named": sum(r.get("fibres") is not None for r in mine)})
     return table
 
 
@@ -282,6 +307,7 @@ def table(rows: list[dict]) -> list[dict]:
              "braid_refit_sweeps": r.get("braid_refit_sweeps", 0),
              "braid_refit_seconds": r.get("braid_refit_seconds", 0.0),
              "softening": softening_said(r.get("softening")),
+             "fibres": fibres_said(r.get("fibres")),
              "missed": ", ".join(r["missed"]) or "-", "seconds": r["seconds"]} for r in rows]
 
 
@@ -303,6 +329,14 @@ def softening_said(softening: dict | None) -> str:
     return f"{softening['softened_pct']:g} % (against the {softening['against']})"
 
 
+def fibres_said(fibres: dict | None) -> str:
+    """The stretch of the braid's fibres identify named, in % at the largest tension, and the
+    E A it gives, or '-'."""
+    if not fibres:
+        return "-"
+    return f"{100 * fibres['strain_at_largest_tension']:.3g} % (E A {fibres['EA_N']:.3g} N)"
+
+
 def first_said(verdict: str | None) -> str:
     """What a verdict sends the reader to first (the rest length, the braid, the rubber's
     ratio, the declared tolerances, the surrogate's box; within the noise, the other braid or
@@ -311,7 +345,8 @@ def first_said(verdict: str | None) -> str:
     if not marks:
         return "-"
     first = verdict.split(marks[0])[1]
-    for key, said in (("trails the pressure", "lag"), ("braid (the braid, creep", "braid or frame"),
+    for key, said in (("trails the pressure", "lag"), ("fibres stretch", "fibres"),
+                      ("braid (the braid, creep", "braid or frame"),
                       ("frame yielding", "frame"),
                       ("first loading", "softening"),
                       ("braid from a creep", "braid, creep or load cell"),

@@ -347,6 +347,9 @@ BENCHMARKS = {
     "identify_wrong_range_frame.json": "benchmarks/bench_identify_wrong_range.py --draws 6 "
                                        "--seed 20261601 --departures 'frame compliance' "
                                        "--out {out}",
+    "identify_wrong_range_fibres.json": "benchmarks/bench_identify_wrong_range.py --draws 3 "
+                                        "--seed 20261601 --departures 'stretching fibres' "
+                                        "--out {out}",
     "identify_wrong_range_lag.json": "benchmarks/bench_identify_wrong_range.py --draws 8 "
                                      "--seed 20261601 --departures 'tubing lag,tubing lag on "
                                      "ramps' --out {out}",

@@ -302,6 +302,36 @@ def outer_diameter_mm(D0_mm, t0_mm, theta0_deg, pressure_bar, C10_MPa=SILASTIC_S
     return 2.0 * np.sqrt(outer_radius_sq_mm2)
 
 
+def stretched_braid(D0_mm, t0_mm, eps, strain):
+    """``(D0_mm, eps)`` at which a model with inextensible fibres gives the force of a muscle
+    held at ``eps`` whose braid's fibres are ``1 + strain`` times as long.
+
+    At a held length ``L`` such fibres are the braid of a muscle ``1 + strain`` times as long
+    and wide at rest, same angle, at ``1 - (1 - eps) / (1 + strain)``; the tube's bore is
+    taken with the braid, its wall as declared (the wall's share of the force is off by about
+    the strain of itself: a tube that only meets the wider braid under pressure)."""
+    braid_mm = D0_mm + 2.0 * t0_mm
+    return braid_mm * (1.0 + strain) - 2.0 * t0_mm, 1.0 - (1.0 - eps) / (1.0 + strain)
+
+
+def fibre_tension_N(force_N, pressure_bar, D0_mm, t0_mm, eps, theta0_deg, strain=0.0):
+    """The braid's fibres' tension [N], all strands along them, of a muscle held at ``eps``
+    pulling ``force_N`` at ``pressure_bar``, its fibres ``1 + strain`` times their rest length.
+
+    The fibres carry the pull and the pressure's end load on the tube's bore, ``(F + P pi
+    r_i^2) / cos theta`` with ``cos theta = (1 - eps) cos theta0 / (1 + strain)``; the braid's
+    radius is ``(1 + strain) R_b sin theta / sin theta0`` and ``r_i`` follows from the wall's
+    volume (a thin-membrane braid: the wall's own axial force left out; the hoop load is in it,
+    as the braid's geometry ties it to the axial one). Never below zero: fibres do not push."""
+    cos0 = np.cos(np.deg2rad(theta0_deg))
+    cos_t = (1.0 - eps) * cos0 / (1.0 + strain)
+    braid_mm = D0_mm + 2.0 * t0_mm
+    outer_mm2 = (braid_mm * (1.0 + strain) / 2.0) ** 2 * (1.0 - cos_t**2) / (1.0 - cos0**2)
+    wall_mm2 = ((braid_mm / 2.0) ** 2 - (D0_mm / 2.0) ** 2) / (1.0 - eps)
+    bore_mm2 = np.maximum(outer_mm2 - wall_mm2, 0.0)
+    return np.maximum(force_N + 0.1 * np.asarray(pressure_bar) * np.pi * bore_mm2, 0.0) / cos_t
+
+
 def effective_eps_of_slope(slope_N_per_bar, D0_mm, t0_mm, theta0_deg):
     """The shortening ``e`` [fraction] at which the braid slope ``dF/dP`` equals ``slope``.
 

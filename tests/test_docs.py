@@ -2796,6 +2796,55 @@ def test_the_guides_frame_that_yields_is_its_measured_file():
     assert (f"one sweep per run of the model the fit searched with: {sum(sweeps)} sweeps over the "
             f"{len(draws)} draws (the table's `frame_check`), all of the surrogate") in said
 
+def test_the_guides_stretching_fibres_are_its_measured_file():
+    """calibration.md's words on identify's defaults with a braid whose fibres stretch: held
+    to ``identify_wrong_range_fibres.json`` (the verdicts' counts, the misfits, the widening
+    and the braid angle's widest interval, the fibres notes' E A against the truth's, and
+    their margin over a frame)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "identify_wrong_range_fibres.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    said = text[text.index("**A braid whose fibres stretch.**"):]
+    said = said[:said.index("**A lag between the monitor and the muscle.**")]
+    assert record["command"] == (
+        "benchmarks/bench_identify_wrong_range.py --draws 3 --seed 20261601 --departures "
+        "\"stretching fibres\" --out docs/measured/identify_wrong_range_fibres.json")
+    draws = record["draws"]
+    count = {v: sum(d["verdict"] == v for d in draws) for v in ("covered", "warned", "SILENT")}
+    strain = [100 * d["muscle"]["fibre_strain_at_top"] for d in draws]
+    chi2 = [d["chi2_per_nu"] for d in draws]
+    widened = [float(re.search(r"widened by x(\S+) ", d["misfit_line"]).group(1))
+               for d in draws]
+    theta = [next(p for p in d["parameters"] if p["parameter"] == "theta0_deg")
+             for d in draws]
+    widest = max(theta, key=lambda p: p["ci_high"] - p["ci_low"])
+    assert all(d["misfit_line"] for d in draws)
+    assert (f"Of the {len(draws)} draws (fibres stretching {min(strain):.2f}-{max(strain):.2f} "
+            f"% at the top), {count['covered']} were covered, {count['warned']} warned and "
+            f"{count['SILENT']} `SILENT`: every fit misfits (chi2/nu {min(chi2):.3g}-"
+            f"{max(chi2):.3g}) and its intervals are widened x{min(widened):.3g}-"
+            f"{max(widened):.3g}, theta0's up to {widest['ci_low']:.1f}-{widest['ci_high']:.1f} "
+            "deg") in said
+    named = [d for d in draws if d["fibres"]]
+    assert all(d["verdict_line"].split("; ")[1].startswith(
+        "first, a braid whose fibres stretch under their tension") for d in named)
+    assert not [n for d in draws for n in d["notes"] if n.startswith("frame: ")]
+    ratio = [d["fibres"]["EA_N"] / d["muscle"]["truth"]["braid_EA_N"] for d in named]
+    left = [d["fibres"]["chi2_per_nu"] for d in named]
+    margin = [100 * (d["fibres"]["chi2_lowered"] / d["fibres"]["frame_chi2_lowered"] - 1)
+              for d in named]
+    least = named[margin.index(min(margin))]
+    assert (f"All {len(named)} name the fibres in a `fibres:` note, their verdicts sending the "
+            f"reader there first, the E A they give {min(ratio):.2f}-{max(ratio):.2f} times the "
+            f"truth's (the fibres fitted leave chi2/nu {min(left):.3g}-{max(left):.3g}), and "
+            f"none names a frame: the fibres lower chi2 by {min(margin):.0f}-{max(margin):.0f} % "
+            f"more than a frame does, the least on seed {least['seed']} "
+            f"({least['fibres']['chi2_lowered']:.3g} against "
+            f"{least['fibres']['frame_chi2_lowered']:.3g})") in said
+
+
 def test_the_guides_lag_between_monitor_and_muscle_is_its_measured_file():
     """calibration.md's words on identify's defaults with tubing between the monitor and the
     muscle: held to ``identify_wrong_range_lag.json`` (the verdicts' counts per shape, the lag

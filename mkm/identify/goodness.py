@@ -126,6 +126,10 @@ class Goodness:
     #: (:func:`mkm.identify.procedure.frame_hint`: its stiffness, what it lowers chi2 by, the note,
     #: the refit's shift that the intervals hold)
     frame: dict | None = None
+    #: a braid whose fibres stretch under their tension explains the misfit better than a frame
+    #: (:func:`mkm.identify.procedure.frame_hint`: their strain at the largest tension, E A, what
+    #: it lowers chi2 by, the note, the refit's shift)
+    fibres: dict | None = None
     #: the frame check where it ran (a judged misfit): the model it swept the runs with once more,
     #: at the shorter held length, and how many sweeps (one per run); the stiffness it fits and
     #: how far it and a rest length lower chi2, named or not
@@ -273,6 +277,8 @@ class Goodness:
                 **({"pulls_late": True} if self.pulls_late else {}),
                 **({"frame": {k: v for k, v in self.frame.items() if k not in ("said", "shift")}}
                    if self.frame else {}),
+                **({"fibres": {k: v for k, v in self.fibres.items() if k not in ("said", "shift")}}
+                   if self.fibres else {}),
                 **({"frame_check": self.frame_check} if self.frame_check else {}),
                 **({"noise_from_repeats": [r.record() for r in self.repeats],
                     "repeats_method": "a step table without a declared accuracy: one step's "

@@ -551,6 +551,12 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         terms = {**terms, "frame": {
             "kind": "one-sided", "what": f"a frame of {fitness.frame['stiffness_N_per_mm']:.3g} "
             "N/mm fitted (linearised)", "shift": fitness.frame["shift"]}}
+    if fitness.fibres:
+        # and the braid's fibres where they stretch in its place
+        terms = {**terms, "fibres": {
+            "kind": "one-sided", "what": "fibres stretching "
+            f"{100 * fitness.fibres['strain_at_largest_tension']:.2g} % at the largest tension "
+            "fitted (linearised)", "shift": fitness.fibres["shift"]}}
     if lag := lag_hint(source, runs, best, fitness):
         # so does a lag the ramps show: without it the fit takes its loop for friction
         terms = {**terms, "lag": {"kind": "one-sided", "what": f"a lag of {lag['tau_s']:.3g} "
@@ -568,6 +574,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                      "the braid angle up (the model-form term creep)")
     notes += [line for line in (fitness.line(), fitness.zero_line()) if line]
     notes += [fitness.frame["said"]] if fitness.frame else []
+    notes += [fitness.fibres["said"]] if fitness.fibres else []
     late = _rest_length_hint(runs, fe, best, fitness, groups)
     fitness.pulls_late = bool(late)
     notes += late
@@ -794,7 +801,15 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
     intervals) where the frame takes :data:`FRAME_TAKES` of the chi-square's excess away and
     more than the rest length does; else None. What the check cost (its model and sweeps) is
     ``fitness.frame_check``, with the stiffness it fits and how far it and a rest length lower
-    chi2, named or not."""
+    chi2, named or not.
+
+    Against a braid whose fibres stretch under their tension as well (:func:`_fibres_column`,
+    one more sweep per run), which also holds the muscle further contracted the harder it
+    pulls, but by the fibres' tension, which the pressure's end load keeps up where the pull
+    is small: where the fibres lower the chi-square more than the frame, on the frame's terms,
+    they are named instead, in ``fitness.fibres`` (their strain at the largest tension, E A,
+    the note and the refit's ``shift``, the model-form term ``fibres``), and the frame is not.
+    """
     if not fitness.misfit or not fitness.judged:
         return None
     tables = source.tables(runs, best.values)
@@ -811,6 +826,9 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
     frame = _hold_change(source, runs, best, [(grid, dF * F / top_N) for (grid, dF), (_, F)
                                               in zip(steps, tables, strict=True)])
     length = _hold_change(source, runs, best, steps)
+    fibres = _fibres_column(source, runs, best, tables)
+    if fibres is not None:
+        fitness.frame_check["sweeps"] += len(runs)
 
     def refit_chi2(column, shift: float) -> float:
         """All steps' chi-square after the linearised refit with ``column`` at ``shift`` of
@@ -829,6 +847,12 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
             optimize.minimize_scalar(lambda e: refit_chi2(length, e), bounds=(-0.1, 0.1),
                                      method="bounded", options={"xatol": 1e-6}).fun)
     lowered, rest_lowered = base - with_frame, base - rest
+    if fibres is not None:
+        column, top_tension_N = fibres
+        strain = optimize.minimize_scalar(lambda e: refit_chi2(column, e), bounds=(0.0, 0.1),
+                                          method="bounded", options={"xatol": 1e-6}).x
+        with_fibres = refit_chi2(column, strain)
+        fibres_lowered = base - with_fibres
     # the shift is eps at the largest force: of the run that pulls it
     L0_mm = max((float(np.max(F)), float(run.muscle["L0_mm"]))
                 for (_, F), run in zip(tables, runs, strict=True))[1]
@@ -838,7 +862,38 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
         fitted_stiffness_N_per_mm=float(f"{1.0 / compliance:.3g}") if at_top > 0 else None,
         chi2_linearised=round(float(base), 3), chi2_lowered=round(float(lowered), 3),
         **({} if "L0_mm" in best.names else
-           {"rest_length_chi2_lowered": round(float(rest_lowered), 3)}))
+           {"rest_length_chi2_lowered": round(float(rest_lowered), 3)}),
+        **({} if fibres is None else
+           {"fibre_strain_at_largest_tension": float(f"{strain:.3g}"),
+            "fibres_chi2_lowered": round(float(fibres_lowered), 3)}))
+    if fibres is not None and (strain > 0 and base > fitness.nu and fibres_lowered >= max(
+            FRAME_TAKES * (base - fitness.nu), lowered) and fibres_lowered > rest_lowered):
+        rest_said = ("" if "L0_mm" in best.names else
+                     f" and a rest length declared wrong by {rest_lowered:.3g}")
+        within = with_fibres <= fitness.nu
+        fitness.fibres = {
+            "strain_at_largest_tension": float(f"{strain:.3g}"),
+            "largest_tension_N": float(f"{top_tension_N:.4g}"),
+            "EA_N": float(f"{top_tension_N / strain:.3g}"),
+            "chi2_lowered": round(float(fibres_lowered), 3),
+            "chi2_per_nu": round(float(with_fibres / fitness.nu), 3),
+            "frame_chi2_lowered": round(float(lowered), 3),
+            **({} if "L0_mm" in best.names else
+               {"rest_length_chi2_lowered": round(float(rest_lowered), 3)}),
+            "said": (f"fibres: the braid's fibres stretching under their tension (about "
+                     f"{100 * strain:.2g} % at the largest, {top_tension_N:.4g} N along them "
+                     f"all: E A about {top_tension_N / strain:.3g} N) hold it as a braid of "
+                     "longer fibres, further contracted the harder it pulls and the higher the "
+                     f"pressure: fitting that (linearised) lowers chi2 by {fibres_lowered:.3g} "
+                     f"(chi2/nu {with_fibres / fitness.nu:.3g}"
+                     f"{', within the noise' if within else ''}), where a frame yielding under "
+                     f"the pull lowers it by {lowered:.3g}{rest_said}; the intervals hold the "
+                     "muscle fitted with it (the model-form term fibres); measure the braid's "
+                     "fibres (a strand's force over its strain, times the strands) or use a "
+                     "stiffer braid, and check the frame's stiffness, then identify again"),
+            "shift": {n: float(v) for n, v in zip(
+                best.names, _step(best, strain / FRAME_EPS_STEP * column), strict=True)}}
+        return None
     if not (at_top > 0 and base > fitness.nu and lowered >= FRAME_TAKES * (base - fitness.nu)
             and lowered > rest_lowered):
         return None
@@ -863,6 +918,36 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
                      "frame or measure its stiffness, or measure the muscle's held length under "
                      "load, and identify again"),
             "shift": {n: float(v) for n, v in zip(best.names, shift, strict=True)}}
+
+
+def _fibres_column(source, runs, best, tables):
+    """The change of the hold residuals [N] when the braid's fibres stretch by
+    :data:`FRAME_EPS_STEP` at the largest tension and by their share of it elsewhere, and that
+    tension [N]; None where the fit has the tube's geometry or rest length, or no angle.
+
+    One sweep per run of the braid of fibres that much longer
+    (:func:`mkm.fem.thickwall.stretched_braid`); their tension at each pressure is the pull
+    and the pressure's end load along them at the fitted angle
+    (:func:`mkm.fem.thickwall.fibre_tension_N`)."""
+    from mkm.fem.thickwall import fibre_tension_N, stretched_braid
+
+    if {"D0_mm", "t0_mm", "L0_mm"} & set(best.names) or "theta0_deg" not in best.values:
+        return None
+    theta0_deg = float(best.values["theta0_deg"])
+    tensions = [fibre_tension_N(F, grid, *run.geometry, theta0_deg)
+                for (grid, F), run in zip(tables, runs, strict=True)]
+    top_N = max(float(np.max(T)) for T in tensions)
+    if not top_N > 0:
+        return None
+    stretched = []
+    for run in runs:
+        D0_mm, t0_mm, eps = run.geometry
+        D0_at_mm, eps_at = stretched_braid(D0_mm, t0_mm, eps, FRAME_EPS_STEP)
+        stretched.append(dataclasses.replace(run, muscle={**run.muscle, "D0_mm": D0_at_mm,
+                                                          "eps": eps_at}))
+    changes = [(grid, (np.interp(grid, *moved) - F) * T / top_N) for (grid, F), moved, T in
+               zip(tables, source.tables(stretched, best.values), tensions, strict=True)]
+    return _hold_change(source, runs, best, changes), top_N
 
 
 def lag_hint(source, runs, best, fitness) -> dict | None:

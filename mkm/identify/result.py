@@ -654,6 +654,11 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
                     f"{frame} may be what the fit lacks: identify again with --braid {braid}; "
                     f"if the misfit stays, {fix}")
         return f"first, {frame} may be what the fit lacks: {fix}"
+    if goodness.fibres:
+        return ("first, a braid whose fibres stretch under their tension (about "
+                f"{100 * goodness.fibres['strain_at_largest_tension']:.2g} % at the largest: "
+                "the note above) may be what the fit lacks: measure the braid's fibres or use "
+                "a stiffer braid, and check the frame's stiffness, then identify again; then ")
     return (pulls_late_first(groups) if goodness.pulls_late
             else ratio_first(rubber, goodness.ratio_freed))
 
