@@ -26,6 +26,7 @@ import numpy as np
 
 from mkm.bench import backends
 from mkm.bench.settings import (
+    PathText,
     Problems,
     positive,
     read_toml,
@@ -444,7 +445,7 @@ class Safety:
     tare_max_shift_N: float = 100.0
     vent_below_bar: float = 0.05
     vent_timeout_s: float = 10.0
-    calibration: str | None = None
+    calibration: PathText | None = None
     overforce_margin_fraction: float = 0.0
 
     def check(self):

@@ -17,6 +17,7 @@ import os
 import re
 import tomllib
 import typing
+import unicodedata
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -25,6 +26,16 @@ from typing import Any
 from mkm.core.ranges import parse_pressures
 
 MAX_TEXT_CHARS = 1_000_000  # a bench configuration is a few kB; beyond this it is not one
+
+#: the type of a setting that names a file or folder: :func:`typed_section` refuses one holding
+#: a control character, what a Windows path in "..." becomes where its backslashes happen to
+#: be valid escapes ("C:\temp\new": a tab and a newline), which would be read without a word
+PathText = typing.NewType("PathText", str)
+
+#: a control character as TOML's "..." writes it, and what it is called
+_ESCAPES = {"\t": ("\\t", "a tab"), "\n": ("\\n", "a new line"),
+            "\r": ("\\r", "a carriage return"), "\b": ("\\b", "a backspace"),
+            "\f": ("\\f", "a form feed")}
 
 #: the byte-order marks of UTF-16, which Notepad's "Unicode", Excel's "Unicode Text" and
 #: Windows PowerShell 5's ``>`` write
@@ -257,6 +268,10 @@ def _convert(value, annotation, key: str):
         if value is None:
             return None
         (annotation,) = [a for a in args if a is not type(None)]
+    if annotation is PathText:
+        if isinstance(value, str):
+            path_text(value, key)
+        annotation = str
     if annotation is float and isinstance(value, int) and not isinstance(value, bool):
         try:
             value = float(value)
@@ -268,6 +283,30 @@ def _convert(value, annotation, key: str):
     if annotation is float and not math.isfinite(value):
         raise ValueError(f"{key}={value!r} is not a finite number")
     return value
+
+
+def path_text(value: str, key: str) -> str:
+    """``value``, the path the setting ``key`` names, or a one-line ``ValueError`` where it
+    holds a control character, with the single-quoted form to type: TOML reads
+    ``"C:\\temp\\new"`` as C:, a tab, emp, a new line, ew."""
+    controls = [c for c in dict.fromkeys(value) if unicodedata.category(c) == "Cc"]
+    if not controls:
+        return value
+    typed = "".join(_ESCAPES[c][0] if c in _ESCAPES
+                    else f"\\u{ord(c):04X}" if unicodedata.category(c) == "Cc" else c
+                    for c in value)
+    named = [f"{_ESCAPES[c][1]} ({_ESCAPES[c][0]})" if c in _ESCAPES
+             else f"the control character U+{ord(c):04X}" for c in controls]
+    said = ", ".join(named[:-1]) + " and " + named[-1] if len(named) > 1 else named[0]
+    name = key.rpartition(".")[2]
+    fixed = f"'{typed}'" if "'" not in typed else f'"{typed.replace(chr(92), "/")}"'
+    raise ValueError(f'{key} = "{_shorter(typed)}" reads as a path with {said} in it: in '
+                     f'"..." a \\ begins an escape; write a Windows path in single quotes, '
+                     f"{name} = {fixed}, or with / for \\")
+
+
+def _shorter(text: str, n: int = 200) -> str:
+    return text if len(text) <= n else text[:n] + "..."
 
 
 def _pressures(value, key: str) -> tuple[float, ...]:
