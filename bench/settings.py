@@ -27,10 +27,11 @@ from mkm.core.ranges import parse_pressures
 
 MAX_TEXT_CHARS = 1_000_000  # a bench configuration is a few kB; beyond this it is not one
 
-#: the type of a setting that names a file or folder: :func:`typed_section` refuses one holding
-#: a control character, what a Windows path in "..." becomes where its backslashes happen to
-#: be valid escapes ("C:\temp\new": a tab and a newline), which would be read without a word
-PathText = typing.NewType("PathText", str)
+class PathText(str):
+    """The type of a setting that names a file or folder: :func:`typed_section` refuses one
+    holding a control character (:func:`path_text`), what a Windows path in ``"..."`` becomes
+    where its backslashes happen to be valid escapes, which would be read without a word. The
+    value is kept as a ``str``."""
 
 #: a control character as TOML's "..." writes it, and what it is called
 _ESCAPES = {"\t": ("\\t", "a tab"), "\n": ("\\n", "a new line"),

@@ -50,7 +50,9 @@ def register(subparsers) -> None:
         "model it was identified with (its 95 %% band beside the force)"),
         L0_default=IDENTIFIED_L0)
     add_geometry_arguments(solve)
-    solve.add_argument("--out", help="write the CSV here instead of stdout")
+    solve.add_argument("--out", help="write the CSV here instead of stdout; a name ending "
+                      "in .xlsx writes an Excel workbook (a German Excel opens a CSV "
+                      "in one column)")
     solve.add_argument("--tolerance", type=argtype(parse_tolerance, "--tolerance"),
                        help="auto only: largest acceptable error against the finest FE, "
                        "e.g. 2%% (default 2%%)")
