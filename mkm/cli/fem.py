@@ -381,14 +381,9 @@ def _calibrate(args) -> int:
 
 
 def _dataset(args) -> int:
-    from mkm.bench.settings import read_toml_file
-    from mkm.fem.dataset import build_dataset, parse_grid
+    from mkm.fem.dataset import build_dataset, load_grid
 
-    # a grid file read as the bench's configurations are: saved by Notepad as "Unicode", its
-    # bad line said with what a Windows user's typing needs
-    grid = (args.grid if args.grid == "paper"
-            else parse_grid(read_toml_file(args.grid, "grid ")[0], args.grid))
-    run = build_dataset(grid, args.model, mesh=args.mesh, out=args.out,
+    run = build_dataset(load_grid(args.grid), args.model, mesh=args.mesh, out=args.out,
                         workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache,
                         progress=not args.no_progress, calibration=args.calibration)
     print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)
