@@ -261,6 +261,13 @@ class RunMeta:
     def n_steps(self) -> int | None:
         return self.sequence.get("n_steps")
 
+    def recording(self) -> str:
+        """``"is still being recorded (pid N)"`` for a run whose ``mkm acquire`` still runs on
+        this machine, else ``""``: its files hold what was on disk a moment ago."""
+        if self.status == RunStatus.RUNNING and self.process and self.process.alive():
+            return f"is still being recorded (pid {self.process.pid})"
+        return ""
+
     def as_dict(self) -> dict[str, Any]:
         """run.json's content: strict JSON, so nothing read (a vent check on a lost device or
         monitor, NaN) is ``null``, which jq, a browser and a spreadsheet's JSON import read."""
@@ -777,9 +784,8 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     kept, samples_csv = kept_samples_path(path), path / "samples.csv"
     if not kept.is_file():
         raise ValueError(f"{path}: no samples of this run are kept in {kept}: nothing to join")
-    if meta.status == RunStatus.RUNNING and meta.process and meta.process.alive():
-        raise ValueError(f"{path} is still being recorded (pid {meta.process.pid}): expected a "
-                         "run that has ended")
+    if meta.recording():
+        raise ValueError(f"{path} {meta.recording()}: expected a run that has ended")
     if not samples_csv.is_file():
         raise ValueError(f"{samples_csv} is missing: expected the run's samples.csv to join "
                          f"the kept samples of {kept} to")

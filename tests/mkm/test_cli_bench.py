@@ -435,6 +435,36 @@ def test_report_says_a_run_vented_a_dead_one_first(tmp_path):
             "2026-12-01T10:00:00+00:00, last commanded 2.5 bar): this run vented it first") in html
 
 
+def test_a_run_still_being_recorded_is_not_identified_and_its_export_says_so(tmp_path, capsys):
+    """A second PC (or window) on the run folder while `mkm acquire` records it: `mkm
+    identify` fitted the steps so far and said `calibration.json is ready`, and `mkm export`
+    wrote them without a word, as if the run were whole."""
+    import json
+
+    from mkm.bench.run import acquire
+    from mkm.bench.storage import ProcessIdentity
+
+    config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
+    path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
+    meta = json.loads((path / "run.json").read_text(encoding="utf-8"))
+    # as run.json reads while its recorder (this process: alive) is at work
+    meta.update(status="running", reason="", process=vars(ProcessIdentity.current()))
+    (path / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    capsys.readouterr()
+    pid = ProcessIdentity.current().pid
+    assert main(["identify", str(path), "--out", str(tmp_path / "id")]) == 2
+    assert capsys.readouterr().err == (
+        f"mkm identify: error: run {path.name} is still being recorded (pid {pid}): expected a "
+        "run that has ended (identify it once its mkm acquire has ended)\n")
+    assert not (tmp_path / "id").exists()
+    assert main(["export", str(path), "--out", str(tmp_path / "run.xlsx")]) == 0
+    captured = capsys.readouterr()
+    assert captured.out == f"{tmp_path / 'run.xlsx'}\n"
+    assert captured.err == (
+        f"mkm export: note: {path.name} is still being recorded (pid {pid}): the export holds "
+        "its record so far (status running); export it again once its mkm acquire has ended\n")
+
+
 def test_demo_on_a_held_simulated_bench_is_one_line(tmp_path, capsys):
     """`mkm demo` while another command holds the simulated bench (another `mkm acquire
     --backend sim`, another demo) said so in a BenchBusy traceback; now one line, exit 1, and
