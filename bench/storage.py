@@ -1169,11 +1169,18 @@ def load_run(path: str | Path) -> Run:
     if status == RunStatus.RUNNING and not (meta.process and meta.process.alive()):
         status = RunStatus.INCOMPLETE
         fatal = fatal_error(path)  # the trace faulthandler wrote as the process died
-        problems.append(f"the run's process died of a fatal error ({fatal}) without closing its "
-                        "record: the trace of the thread that faulted is in "
-                        f"{path / FATAL_TRACE_FILE}"
-                        if fatal else
-                        "the run stopped without closing its record (killed or crashed)")
+        host = meta.process.host if meta.process else ""
+        if fatal:
+            problems.append(f"the run's process died of a fatal error ({fatal}) without closing "
+                            "its record: the trace of the thread that faulted is in "
+                            f"{path / FATAL_TRACE_FILE}")
+        elif host and host != socket.gethostname():  # a run folder on a share: its processes
+            # are another PC's
+            problems.append(f"the run's record is open, written by mkm acquire on {host}: this "
+                            "PC cannot tell whether it still records there or stopped without "
+                            "closing its record (killed or crashed)")
+        else:
+            problems.append("the run stopped without closing its record (killed or crashed)")
         # run.json's counter is from its last rewrite; the rows on disk are the truth
         written = Run(path, meta, steps, status).n_samples if samples_csv.is_file() else 0
         if written != meta.counters.get("samples"):
