@@ -9,7 +9,7 @@ every time and count bounded, and the whole run's planned duration bounded by
 configured backend (``[daq] backend``, one of :mod:`mkm.bench.backends`). A bad value raises
 ``ValueError`` naming the ``section.key``, the value and what was expected. The simulator's own
 ``[sim]`` settings are in :mod:`mkm.bench.sim_settings`; TOML reading in
-:mod:`mkm.bench.settings`.
+:mod:`mkm.core.toml_text`, typed sections in :mod:`mkm.bench.settings`.
 """
 
 from __future__ import annotations
@@ -25,17 +25,11 @@ from typing import Any
 import numpy as np
 
 from mkm.bench import backends
-from mkm.bench.settings import (
-    Problems,
-    positive,
-    read_toml,
-    read_toml_file,
-    typed_section,
-    within,
-)
+from mkm.bench.settings import PathText, Problems, positive, typed_section, within
 from mkm.bench.sim_settings import Sim
 from mkm.core.ranges import parse_fraction
 from mkm.core.records import file_sha256, write_atomic
+from mkm.core.toml_text import read_toml, read_toml_file
 from mkm.fem.limits import LIMITS, check_gap, check_muscle_id, check_wall
 from mkm.fem.muscle import Muscle
 from mkm.fem.tolerances import Tolerances
@@ -444,7 +438,7 @@ class Safety:
     tare_max_shift_N: float = 100.0
     vent_below_bar: float = 0.05
     vent_timeout_s: float = 10.0
-    calibration: str | None = None
+    calibration: PathText | None = None
     overforce_margin_fraction: float = 0.0
 
     def check(self):

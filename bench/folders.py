@@ -11,8 +11,8 @@ import glob
 import re
 from pathlib import Path
 
-from mkm.bench.settings import separator_hint as _separator_hint
 from mkm.bench.tables import TEXT_SUFFIXES, WORKBOOK_SUFFIXES
+from mkm.core.toml_text import separator_hint as _separator_hint
 
 TABLE_SUFFIXES = (*TEXT_SUFFIXES, *WORKBOOK_SUFFIXES)
 RUN_RECORD = "run.json"

@@ -58,8 +58,10 @@ def error_for_code(code: int, message: str, default: type[BenchError] = BenchErr
     return cls(f"NI-DAQmx error {code}: {first_line}")
 
 
-DRIVER_MISSING = ("NI-DAQmx driver not found: install NI-DAQmx (Windows; NI does not support the "
-                  "USB-6001 on Linux) or run on the simulated bench with --backend sim")
+DRIVER_MISSING = ("NI-DAQmx, NI's driver of the USB-6001, is not installed: on Windows type "
+                  "'python -m nidaqmx installdriver' (it downloads NI's installer; or get "
+                  "NI-DAQmx from ni.com), then restart the PC (NI does not support the USB-6001 "
+                  "on Linux); without the bench, --backend sim runs the simulated one")
 TERMINAL_CONFIG_NAMES = {"differential": "DIFF", "rse": "RSE"}  # what the USB-6001 has
 VENT_V = 0.0  # an ITV-class regulator exhausts at 0 V command
 #: A device lost mid-run is reset and given fresh tasks for at most this long [s], every

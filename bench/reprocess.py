@@ -24,7 +24,6 @@ import numpy as np
 from mkm.bench.budget import Instrument
 from mkm.bench.config import BenchConfig, Step, config_from_tables
 from mkm.bench.sequence import HoldStats, TareInvalid, validate_tare
-from mkm.bench.settings import read_toml_file
 from mkm.bench.storage import (
     CommandRecord,
     ProcessIdentity,
@@ -37,6 +36,7 @@ from mkm.bench.storage import (
 )
 from mkm.core.guards import regular_file
 from mkm.core.records import file_sha256, provenance
+from mkm.core.toml_text import read_toml_file
 
 
 def overlay_config(run_dir: str | Path, path: str | Path) -> BenchConfig:

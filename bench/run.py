@@ -62,7 +62,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from mkm.bench import backends
-from mkm.bench.backend import Backend, BenchError, DaqDisconnected
+from mkm.bench.backend import Backend, BenchError, DaqDisconnected, DriverMissing
 from mkm.bench.bounded import call_within
 from mkm.bench.config import MONITOR_FAULT, BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
@@ -708,6 +708,8 @@ class BenchRun:
         elif isinstance(outcome, DeadRunsVentHung | DriverHangs):  # said whole; the device is
             # asked no more
             status, reason, self._device_hangs = RunStatus.FAILED, str(outcome), True
+        elif isinstance(outcome, DriverMissing):  # what to install, said whole
+            status, reason = RunStatus.FAILED, str(outcome)
         elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
             status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
         elif outcome is not None:

@@ -1,139 +1,36 @@
-"""Typed settings from TOML: the one TOML reader of the bench and the checks settings share.
+"""Typed settings from TOML tables (read by :mod:`mkm.core.toml_text`) and the checks settings
+share.
 
-:func:`read_toml` parses every TOML the bench reads (configurations, a run folder's
-``config.toml``) and turns any malformed text, including nesting deep enough to exhaust the
-parser's recursion, into one ``ValueError``. :func:`typed_section` fills a frozen dataclass from
-one table: unknown keys, missing required keys and wrong types are named with their
-``section.key``; the dataclass's own ``check()`` then validates the values. :func:`saved_text`
-decodes a file as a Windows program may have saved it (the configurations, design specs and
-tables a user edits).
+:func:`typed_section` fills a frozen dataclass from one table: unknown keys, missing required
+keys and wrong types are named with their ``section.key``; the dataclass's own ``check()`` then
+validates the values.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-import os
 import re
-import tomllib
 import typing
+import unicodedata
 from collections.abc import Iterator
 from contextlib import contextmanager
-from pathlib import Path
 from typing import Any
 
 from mkm.core.ranges import parse_pressures
 
-MAX_TEXT_CHARS = 1_000_000  # a bench configuration is a few kB; beyond this it is not one
 
-#: the byte-order marks of UTF-16, which Notepad's "Unicode", Excel's "Unicode Text" and
-#: Windows PowerShell 5's ``>`` write
-UTF16_BOMS = (b"\xff\xfe", b"\xfe\xff")
-#: what may follow the last line: a DOS program's end-of-file mark (Ctrl-Z) and a logger's
-#: file written into space filled with NULs beforehand
-TEXT_END_PADDING = "\x00\x1a"
+class PathText(str):
+    """The type of a setting that names a file or folder: :func:`typed_section` refuses one
+    holding a control character (:func:`path_text`), what a Windows path in ``"..."`` becomes
+    where its backslashes happen to be valid escapes, which would be read without a word. The
+    value is kept as a ``str``."""
 
 
-def saved_text(data: bytes) -> str:
-    """The text of a file as a Windows program may have saved it: UTF-16 with its byte-order
-    mark, or without one (a logger's, a script's: a NUL in its first two bytes), else UTF-8
-    with or without its byte-order mark; a trailing Ctrl-Z or NUL padding is no text.
-    ``UnicodeDecodeError`` for bytes that are none of them (a Windows code page)."""
-    if data.startswith(UTF16_BOMS):
-        text = data.decode("utf-16", errors="replace")
-    elif b"\x00" in data[:2]:
-        text = data.decode("utf-16-le" if data[1:2] == b"\x00" else "utf-16-be",
-                           errors="replace")
-    else:
-        text = data.rstrip(TEXT_END_PADDING.encode()).decode("utf-8-sig")
-    return text.rstrip(TEXT_END_PADDING)
-
-
-def separator_hint(argument: str) -> str:
-    """What a Windows path typed on another system needs ("runs\\R": one name here)."""
-    if os.sep != "/" or "\\" not in argument:
-        return ""
-    posix = argument.replace("\\", "/")
-    return f"; on this system folders are separated by /: {posix!r}?"
-
-
-def saved_as_hint(path: Path) -> str:
-    """Where Windows put the file ``path`` names, when it names none: Notepad saves
-    ``bench.toml`` as ``bench.toml.txt`` unless its type is "All files", and Explorer hides the
-    extension, so that file shows as ``bench.toml`` and a name typed from it lacks ``.toml``."""
-    for other, why in ((path.with_name(path.name + ".txt"),
-                        "Notepad added .txt: rename it, or save with type 'All files'"),
-                       (path.with_name(path.name + ".toml"),
-                        "Explorer hides the extension: type it too")):
-        if path.suffix != other.suffix and other.is_file():
-            return f"; {other} is there ({why})"
-    return ""
-
-
-def toml_hint(text: str, exc: tomllib.TOMLDecodeError) -> str:
-    """What the line tomllib refused needs, where its message names the parser's complaint
-    only: a Windows path in a "..." string (each backslash begins an escape), a decimal comma,
-    a word without quotes, Python's ``True``. ``""`` when none of them is the cause."""
-    message = str(exc)
-    at = re.search(r"\(at line (\d+), column \d+\)$", message)
-    lines = text.splitlines()
-    if at is None or int(at[1]) > len(lines):
-        return ""
-    line = lines[int(at[1]) - 1]
-    key, _, value = (part.strip() for part in line.partition("="))
-    value = value.split("#")[0].strip()
-    if message.startswith(("Unescaped '\\'", "Invalid hex value", "Escaped character")):
-        typed = next((m[1] for m in re.finditer(r'"((?:[^"\\]|\\.)*)"', line)
-                      if "\\" in m[1]), None)
-        if typed is not None:
-            fixed = f"'{typed}'" if "'" not in typed else f'"{typed.replace(chr(92), "/")}"'
-            return (f"; a \\ in \"...\" begins an escape (\\n, \\t, \\U...): write a Windows "
-                    f"path in single quotes, {key} = {fixed}, or with / for \\")
-    if message.startswith("Expected newline") and re.fullmatch(r"[+-]?\d+,\d+", value):
-        return f"; a decimal comma: TOML numbers take a point, {key} = {value.replace(',', '.')}"
-    if message.startswith("Invalid value") and re.fullmatch(r"[A-Za-z_][\w.+-]*", value):
-        if value.lower() in ("true", "false"):
-            return f"; TOML's true and false are lower case: {key} = {value.lower()}"
-        return f'; a text value goes in quotes: {key} = "{value}"'
-    return ""
-
-
-def read_toml(text: str, source: str) -> dict[str, Any]:
-    """The tables of the TOML ``text`` read from ``source``, or one-line ``ValueError``."""
-    if len(text) > MAX_TEXT_CHARS:
-        raise ValueError(f"{source} has {len(text)} characters: expected a TOML file of at most "
-                         f"{MAX_TEXT_CHARS}")
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{source} is not valid TOML: {exc}{toml_hint(text, exc)}") from None
-    except RecursionError:
-        raise ValueError(f"{source} is not valid TOML: nested too deeply") from None
-
-
-def read_toml_file(path: str | Path, what: str = "") -> tuple[str, dict[str, Any]]:
-    """The text of the TOML file ``path`` and its tables (:func:`read_toml`); ``what`` prefixes
-    the messages (``"config "``)."""
-    path = Path(path)
-    shown = str(path) if len(str(path)) <= 200 else str(path)[:200] + "..."
-    try:
-        if path.is_dir():
-            raise ValueError(f"{what}{shown} is a folder: expected a TOML file")
-        if not path.is_file():
-            raise ValueError(f"{what}{shown} does not exist: expected a TOML file"
-                             f"{separator_hint(str(path)) or saved_as_hint(path)}")
-        if path.stat().st_size > MAX_TEXT_CHARS * 4:
-            raise ValueError(f"{what}{shown} is {path.stat().st_size} bytes: expected a TOML "
-                             f"file of at most {MAX_TEXT_CHARS} characters")
-        # Notepad's BOM, its "Unicode" (UTF-16), a DOS editor's Ctrl-Z at the end
-        text = saved_text(path.read_bytes())
-    except OSError as exc:
-        raise ValueError(f"{what}{shown} cannot be read ({exc.strerror or exc})") from None
-    except UnicodeDecodeError as exc:
-        raise ValueError(f"{what}{shown} is not UTF-8 text (byte {exc.start + 1} is not, as "
-                         "a Windows code page saves an accented letter): save it as UTF-8 "
-                         "(Notepad: File, Save as, Encoding UTF-8)") from None
-    return text, read_toml(text, f"{what}{path}")
+#: a control character as TOML's "..." writes it, and what it is called
+_ESCAPES = {"\t": ("\\t", "a tab"), "\n": ("\\n", "a new line"),
+            "\r": ("\\r", "a carriage return"), "\b": ("\\b", "a backspace"),
+            "\f": ("\\f", "a form feed")}
 
 
 class Problems:
@@ -257,6 +154,10 @@ def _convert(value, annotation, key: str):
         if value is None:
             return None
         (annotation,) = [a for a in args if a is not type(None)]
+    if annotation is PathText:
+        if isinstance(value, str):
+            path_text(value, key)
+        annotation = str
     if annotation is float and isinstance(value, int) and not isinstance(value, bool):
         try:
             value = float(value)
@@ -268,6 +169,30 @@ def _convert(value, annotation, key: str):
     if annotation is float and not math.isfinite(value):
         raise ValueError(f"{key}={value!r} is not a finite number")
     return value
+
+
+def path_text(value: str, key: str) -> str:
+    """``value``, the path the setting ``key`` names, or a one-line ``ValueError`` where it
+    holds a control character, with the single-quoted form to type: TOML reads
+    ``"C:\\temp\\new"`` as C:, a tab, emp, a new line, ew."""
+    controls = [c for c in dict.fromkeys(value) if unicodedata.category(c) == "Cc"]
+    if not controls:
+        return value
+    typed = "".join(_ESCAPES[c][0] if c in _ESCAPES
+                    else f"\\u{ord(c):04X}" if unicodedata.category(c) == "Cc" else c
+                    for c in value)
+    named = [f"{_ESCAPES[c][1]} ({_ESCAPES[c][0]})" if c in _ESCAPES
+             else f"the control character U+{ord(c):04X}" for c in controls]
+    said = ", ".join(named[:-1]) + " and " + named[-1] if len(named) > 1 else named[0]
+    name = key.rpartition(".")[2]
+    fixed = f"'{typed}'" if "'" not in typed else f'"{typed.replace(chr(92), "/")}"'
+    raise ValueError(f'{key} = "{_shorter(typed)}" reads as a path with {said} in it: in '
+                     f'"..." a \\ begins an escape; write a Windows path in single quotes, '
+                     f"{name} = {fixed}, or with / for \\")
+
+
+def _shorter(text: str, n: int = 200) -> str:
+    return text if len(text) <= n else text[:n] + "..."
 
 
 def _pressures(value, key: str) -> tuple[float, ...]:

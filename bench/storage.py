@@ -261,6 +261,13 @@ class RunMeta:
     def n_steps(self) -> int | None:
         return self.sequence.get("n_steps")
 
+    def recording(self) -> str:
+        """``"is still being recorded (pid N)"`` for a run whose ``mkm acquire`` still runs on
+        this machine, else ``""``: its files hold what was on disk a moment ago."""
+        if self.status == RunStatus.RUNNING and self.process and self.process.alive():
+            return f"is still being recorded (pid {self.process.pid})"
+        return ""
+
     def as_dict(self) -> dict[str, Any]:
         """run.json's content: strict JSON, so nothing read (a vent check on a lost device or
         monitor, NaN) is ``null``, which jq, a browser and a spreadsheet's JSON import read."""
@@ -777,9 +784,8 @@ def join_kept_samples(run_dir: str | Path) -> tuple[str, bool]:
     kept, samples_csv = kept_samples_path(path), path / "samples.csv"
     if not kept.is_file():
         raise ValueError(f"{path}: no samples of this run are kept in {kept}: nothing to join")
-    if meta.status == RunStatus.RUNNING and meta.process and meta.process.alive():
-        raise ValueError(f"{path} is still being recorded (pid {meta.process.pid}): expected a "
-                         "run that has ended")
+    if meta.recording():
+        raise ValueError(f"{path} {meta.recording()}: expected a run that has ended")
     if not samples_csv.is_file():
         raise ValueError(f"{samples_csv} is missing: expected the run's samples.csv to join "
                          f"the kept samples of {kept} to")
@@ -1163,11 +1169,18 @@ def load_run(path: str | Path) -> Run:
     if status == RunStatus.RUNNING and not (meta.process and meta.process.alive()):
         status = RunStatus.INCOMPLETE
         fatal = fatal_error(path)  # the trace faulthandler wrote as the process died
-        problems.append(f"the run's process died of a fatal error ({fatal}) without closing its "
-                        "record: the trace of the thread that faulted is in "
-                        f"{path / FATAL_TRACE_FILE}"
-                        if fatal else
-                        "the run stopped without closing its record (killed or crashed)")
+        host = meta.process.host if meta.process else ""
+        if fatal:
+            problems.append(f"the run's process died of a fatal error ({fatal}) without closing "
+                            "its record: the trace of the thread that faulted is in "
+                            f"{path / FATAL_TRACE_FILE}")
+        elif host and host != socket.gethostname():  # a run folder on a share: its processes
+            # are another PC's
+            problems.append(f"the run's record is open, written by mkm acquire on {host}: this "
+                            "PC cannot tell whether it still records there or stopped without "
+                            "closing its record (killed or crashed)")
+        else:
+            problems.append("the run stopped without closing its record (killed or crashed)")
         # run.json's counter is from its last rewrite; the rows on disk are the truth
         written = Run(path, meta, steps, status).n_samples if samples_csv.is_file() else 0
         if written != meta.counters.get("samples"):

@@ -37,9 +37,9 @@ from pathlib import Path
 import numpy as np
 
 from mkm.bench.series import PLATEAU_TOLERANCE_BAR
-from mkm.bench.settings import TEXT_END_PADDING, saved_text
 from mkm.core.guards import table_file
 from mkm.core.records import file_sha256
+from mkm.core.toml_text import TEXT_END_PADDING, saved_text
 
 #: the largest table read (rows below the header, over all sheets)
 MAX_ROWS = 2_000_000

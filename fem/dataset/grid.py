@@ -7,7 +7,6 @@ the steps reach it, never exceeded).
 from __future__ import annotations
 
 import os
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -15,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from mkm.core.ranges import parse_range
+from mkm.core.toml_text import read_toml, read_toml_file
 from mkm.fem.eq2 import LOCKING_ANGLE_DEG
 from mkm.fem.interface import validate_inputs
 from mkm.fem.limits import check_value
@@ -46,10 +46,7 @@ def parse_grid(text: str, source: str) -> Grid:
 
     Raises ``ValueError`` naming the grid, the bad key or value and what was expected.
     """
-    try:
-        table = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"grid {source}: not valid TOML: {exc}") from None
+    table = read_toml(text, f"grid {source}")
     unknown = sorted(set(table) - set(GRID_KEYS))
     if unknown:
         raise ValueError(f"grid {source}: unknown key {unknown[0]!r}: "
@@ -99,14 +96,10 @@ def _grid_values(source: str, key: str, value) -> np.ndarray:
 
 
 def load_grid(spec: str | os.PathLike) -> Grid:
-    """``"paper"`` (Table 1 of the paper, ``fem/dataset/grids/paper.toml``) or a grid TOML path."""
+    """``"paper"`` (Table 1 of the paper, ``fem/dataset/grids/paper.toml``) or a grid TOML path,
+    read as a bench configuration is (:func:`mkm.core.toml_text.read_toml_file`: saved by
+    Notepad as "Unicode", with a BOM or a Ctrl-Z; a bad line said with what a Windows user's
+    typing needs)."""
     path = TABLE1_GRID if spec == "paper" else Path(spec)
-    try:
-        text = path.read_text(encoding="utf-8-sig")  # a BOM: saved by a Windows editor
-    except OSError as exc:
-        raise ValueError(f"grid {spec}: cannot read {path}: {exc.strerror}: expected 'paper' "
-                         "or the path of a grid TOML file") from None
-    except UnicodeDecodeError as exc:  # saved in a Windows code page
-        raise ValueError(f"grid {spec}: cannot be read as UTF-8 text ({exc}): expected 'paper' "
-                         "or the path of a grid TOML file") from None
+    text, _ = read_toml_file(path, "grid ", "'paper' or the path of a grid TOML file")
     return parse_grid(text, str(spec))

@@ -7,6 +7,7 @@ import io
 import os
 import re
 import sys
+from pathlib import Path
 
 from mkm.core.ranges import parse_fraction, parse_number, parse_pressures, parse_shortenings
 from mkm.core.records import (
@@ -14,6 +15,7 @@ from mkm.core.records import (
     sidecar_path,
     write_csv_with_sidecar,
     write_prediction_csv,
+    write_workbook_with_sidecar,
 )
 from mkm.flags import FLAG_OF, dests
 from mkm.registry import entries, entry, parse_spec
@@ -338,14 +340,13 @@ def spec_from_args(args, **overrides):
 
 
 def emit_prediction(prediction, out: str | None, model=None) -> None:
-    """The prediction as plain CSV to ``out`` with its metadata in a JSON sidecar (announced on
-    stderr), or the CSV alone to stdout. Given the ``model`` that made it, the sidecar also
-    records its code version, for a model with a calibrated angle which calibration gave it
+    """The prediction as plain CSV to ``out`` (an ``.xlsx`` workbook for a name so ending) with
+    its metadata in a JSON sidecar (announced on stderr), or the CSV alone to stdout. Given the
+    ``model`` that made it, the sidecar also records its code version, for a model with a
+    calibrated angle which calibration gave it
     (:func:`mkm.fem.calibration.calibration_provenance`), and for a surrogate its model file's
     sha256, its training's provenance, seed and dataset."""
     if out:
-        buffer = io.StringIO()
-        write_prediction_csv(prediction, buffer)
         metadata = prediction_metadata(prediction)
         if model is not None:
             from mkm.fem.calibration import CalibratedTheta0, calibration_provenance
@@ -355,7 +356,12 @@ def emit_prediction(prediction, out: str | None, model=None) -> None:
             if isinstance(model, CalibratedTheta0):
                 metadata["calibration"] = calibration_provenance(model)
             metadata.update(model_origin(model))
-        path = write_csv_with_sidecar(out, buffer.getvalue(), metadata)
+        if Path(out).suffix.lower() == ".xlsx":
+            path = write_workbook_with_sidecar(out, prediction.to_frame(), metadata)
+        else:
+            buffer = io.StringIO()
+            write_prediction_csv(prediction, buffer)
+            path = write_csv_with_sidecar(out, buffer.getvalue(), metadata)
         print(f"wrote {path} and {sidecar_path(path).name}", file=sys.stderr)
     else:
         write_prediction_csv(prediction, sys.stdout)

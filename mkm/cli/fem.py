@@ -50,7 +50,9 @@ def register(subparsers) -> None:
         "model it was identified with (its 95 %% band beside the force)"),
         L0_default=IDENTIFIED_L0)
     add_geometry_arguments(solve)
-    solve.add_argument("--out", help="write the CSV here instead of stdout")
+    solve.add_argument("--out", help="write the CSV here instead of stdout; a name ending "
+                      "in .xlsx writes an Excel workbook (a German Excel opens a CSV "
+                      "in one column)")
     solve.add_argument("--tolerance", type=argtype(parse_tolerance, "--tolerance"),
                        help="auto only: largest acceptable error against the finest FE, "
                        "e.g. 2%% (default 2%%)")
@@ -379,14 +381,9 @@ def _calibrate(args) -> int:
 
 
 def _dataset(args) -> int:
-    from mkm.bench.settings import read_toml_file
-    from mkm.fem.dataset import build_dataset, parse_grid
+    from mkm.fem.dataset import build_dataset, load_grid
 
-    # a grid file read as the bench's configurations are: saved by Notepad as "Unicode", its
-    # bad line said with what a Windows user's typing needs
-    grid = (args.grid if args.grid == "paper"
-            else parse_grid(read_toml_file(args.grid, "grid ")[0], args.grid))
-    run = build_dataset(grid, args.model, mesh=args.mesh, out=args.out,
+    run = build_dataset(load_grid(args.grid), args.model, mesh=args.mesh, out=args.out,
                         workers=args.workers, scheduler=args.scheduler, cache_dir=args.cache,
                         progress=not args.no_progress, calibration=args.calibration)
     print(f"mkm fem dataset: {run.summary()}", file=sys.stderr)

@@ -82,7 +82,9 @@ def register(subparsers) -> None:
                          "best surrogate), or surrogate:kind=KIND (trained on first use)")
     add_geometry_arguments(predict)
     _parameter_arguments(predict)
-    predict.add_argument("--out", help="write the CSV here instead of stdout")
+    predict.add_argument("--out", help="write the CSV here instead of stdout; a name ending "
+                      "in .xlsx writes an Excel workbook (a German Excel opens a CSV "
+                      "in one column)")
     predict.set_defaults(func=_predict, written_files={"out": ".csv"})
 
     test = sub.add_parser(

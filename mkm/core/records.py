@@ -23,6 +23,7 @@ from __future__ import annotations
 import ast
 import datetime
 import hashlib
+import io
 import json
 import math
 import os
@@ -471,13 +472,22 @@ def holds_provenance(path: Path) -> bool:
     return any(isinstance(d, dict) and {"date_utc", "command"} <= d.keys() for d in places)
 
 
-def check_csv_with_sidecar(path: str | os.PathLike) -> Path:
-    """``path`` if a CSV and its sidecar (:func:`sidecar_path`) may be written there, else
-    ``ValueError`` naming the file in the way. The sidecar's name comes from the CSV's, so the
-    user never named it: ``--out lab.csv`` must not replace the lab's calibration ``lab.json``,
-    nor ``--out sweep.json`` the CSV by its own metadata. Each file must be new or an earlier
-    output (its sidecar holding mkm's provenance)."""
+#: the names of workbooks: CSV text in such a file is a file Excel refuses to open
+WORKBOOK_SUFFIXES = (".xlsx", ".xlsm", ".xls", ".ods")
+
+
+def check_csv_with_sidecar(path: str | os.PathLike, workbook: bool = False) -> Path:
+    """``path`` if a CSV (``workbook``: an ``.xlsx`` workbook) and its sidecar
+    (:func:`sidecar_path`) may be written there, else ``ValueError`` naming the file in the way
+    or, for a CSV, a workbook's name (CSV text in it is a file Excel refuses to open). The
+    sidecar's name comes from the CSV's, so the user never named it: ``--out lab.csv`` must not
+    replace the lab's calibration ``lab.json``, nor ``--out sweep.json`` the CSV by its own
+    metadata. Each file must be new or an earlier output (its sidecar holding mkm's
+    provenance)."""
     path = Path(path)
+    if not workbook and path.suffix.lower() in WORKBOOK_SUFFIXES:
+        raise ValueError(f"{path}: a workbook's name, and this table is written as CSV: "
+                         f"expected a .csv name ({path.with_suffix('.csv').name})")
     sidecar = sidecar_path(path)
     if sidecar == path:
         raise ValueError(f"{path}: its metadata goes to {sidecar.name}, the same file: expected "
@@ -572,6 +582,21 @@ def write_csv_with_sidecar(path: str | os.PathLike, csv_text: str, metadata: dic
     before anything is written when either would replace a file the user has
     (:func:`check_csv_with_sidecar`)."""
     path = write_atomic(check_csv_with_sidecar(path), csv_text)
+    write_json_atomic(sidecar_path(path), metadata)
+    return path
+
+
+def write_workbook_with_sidecar(path: str | os.PathLike, frame, metadata: dict) -> Path:
+    """The DataFrame ``frame`` as an ``.xlsx`` workbook of one sheet at ``path`` (numbers as
+    numbers, whatever the spreadsheet's decimal separator: a German Excel opens a CSV in one
+    column) and its metadata as JSON beside it, as :func:`write_csv_with_sidecar` does."""
+    import pandas as pd  # here: the command line starts without pandas
+
+    buffer = io.BytesIO()
+    with pd.ExcelWriter(buffer, engine="openpyxl") as book:
+        spreadsheet_safe(frame).to_excel(book, sheet_name=Path(path).stem[:31] or "table",
+                                         index=False)
+    path = write_atomic(check_csv_with_sidecar(path, workbook=True), buffer.getvalue())
     write_json_atomic(sidecar_path(path), metadata)
     return path
 

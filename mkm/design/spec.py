@@ -7,8 +7,8 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
-from mkm.bench.settings import saved_as_hint, saved_text, toml_hint
 from mkm.core.ranges import parse_fraction, parse_number
+from mkm.core.toml_text import saved_as_hint, saved_text, toml_hint
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.limits import check_value
 from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin

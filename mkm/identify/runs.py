@@ -254,16 +254,20 @@ def measurement_keys(name: str, sha256: dict[str, str]) -> set[str]:
 def load_run_data(path) -> RunData:
     """A run folder for identification; ``ValueError`` names a run that cannot serve.
 
-    Refused: a run whose status is ``failed`` (unless its steps were all done and only its
-    end-of-run vent was not verified, :func:`unverified_vent`), a run without a settled step,
-    a run without its samples. Within each settled hold the regulator has reached the set
-    pressure (the settle criterion), so the hold's samples take the hold's mean pressure: the
+    Refused: a run still being recorded, a run whose status is ``failed`` (unless its steps
+    were all done and only its end-of-run vent was not verified, :func:`unverified_vent`), a
+    run without a settled step, a run without its samples. Within each settled hold the
+    regulator has reached the set pressure (the settle criterion), so the hold's samples take
+    the hold's mean pressure: the
     monitor's noise would otherwise ratchet the friction model's play operator.
     """
     from mkm.bench.storage import load_run
 
     run = load_run(path)
     path = Path(path)
+    if run.meta.recording():  # its steps so far would be identified as the whole run
+        raise ValueError(f"run {path.name} {run.meta.recording()}: expected a run that has "
+                         "ended (identify it once its mkm acquire has ended)")
     note = unverified_vent(run, path.name) if str(run.status) == "failed" else ""
     if run.rows_lost:  # steps whose hold samples are gone would be fitted as forces of zero
         raise ValueError(f"run {path.name}: {run.rows_lost[0]}: expected the whole record to "

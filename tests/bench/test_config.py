@@ -291,6 +291,64 @@ def test_a_toml_line_windows_users_type_says_what_it_needs(tmp_path, mkm_cli, ed
         f"mkm check: error: config {tmp_path / 'bench.toml'} is not valid TOML: {said}"]
 
 
+def _path_settings(cls, where: str) -> list[str]:
+    """Every setting of ``cls`` (a section of the configuration) typed as a path, found from
+    the types, nested sections included."""
+    import dataclasses
+    import typing
+
+    from mkm.bench.settings import PathText
+
+    found = []
+    for name, hint in typing.get_type_hints(cls).items():
+        if dataclasses.is_dataclass(hint):
+            found += _path_settings(hint, f"{where}.{name}")
+        elif PathText in (hint, *typing.get_args(hint)):
+            found.append(f"{where}.{name}")
+    return found
+
+
+def _config_path_settings() -> list[str]:
+    from mkm.bench.config import SECTIONS
+
+    return [key for section, read in SECTIONS.items() if isinstance(read, type)
+            for key in _path_settings(read, section)]
+
+
+def test_the_configuration_has_path_settings_and_the_calibration_is_one():
+    # the search below must find something to test: the over-force calibration is a path
+    assert "safety.calibration" in _config_path_settings()
+
+
+@pytest.mark.parametrize("key", _config_path_settings())
+@pytest.mark.parametrize(("typed", "said"), [
+    # TOML reads each \t, \n as an escape: C:, a tab, emp, a new line, ew, without a word
+    ("C:\\temp\\new", "a tab (\\t) and a new line (\\n)"),
+    ("D:\\bench\\results\\fits", "a backspace (\\b), a carriage return (\\r) and a form "
+     "feed (\\f)"),
+])
+def test_a_windows_path_whose_backslashes_are_escapes_is_refused_with_the_form_to_type(
+        tmp_path, mkm_cli, key, typed, said):
+    from mkm.bench.config import example_config
+
+    section, _, name = key.rpartition(".")
+    text = example_config().read_text("utf-8").replace(
+        f"[{section}]\n", f'[{section}]\n{name} = "{typed}"\n', 1)
+    (tmp_path / "bench.toml").write_text(text, encoding="utf-8")
+    code, out, err = mkm_cli(["check", "--config", str(tmp_path / "bench.toml")])
+    assert code == 2 and out == ""
+    assert err.strip().splitlines()[-1] == (
+        f"mkm check: error: config {tmp_path / 'bench.toml'}: {key} = \"{typed}\" reads as a "
+        f"path with {said} in it: in \"...\" a \\ begins an escape; write a Windows path in "
+        f"single quotes, {name} = '{typed}', or with / for \\")
+    # the form it offers is read as typed
+    fixed = text.replace(f'{name} = "{typed}"', f"{name} = '{typed}'")
+    read = parse_config(fixed)
+    for part in key.split("."):
+        read = getattr(read, part)
+    assert read == typed
+
+
 def test_command_is_clamped_and_monitor_scaled():
     r = load_config().regulator
     assert r.command_volts(1.0) == pytest.approx(2.5)  # 0-10 V over 0-4 bar full scale

@@ -153,7 +153,7 @@ def test_reserved_device_at_open(config, fake_driver):
 
 def test_driver_missing_is_one_clear_message(config, fake_driver):
     fake_driver.interpreter.create_task.side_effect = DaqNotFoundError("no lib")
-    with pytest.raises(DriverMissing, match="install NI-DAQmx .* --backend sim"):
+    with pytest.raises(DriverMissing, match="python -m nidaqmx installdriver.* --backend sim"):
         NIBackend(config).open()
 
 

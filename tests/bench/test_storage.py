@@ -54,6 +54,21 @@ def test_live_run_is_reported_running(run_path):
     assert run.status == "running" and not run.complete
 
 
+def test_a_run_recorded_on_another_pc_is_not_called_killed(run_path):
+    # a run folder on a network share, read from a second bench PC while the first records it:
+    # its process is that PC's, which this one cannot see, and the loader said "the run stopped
+    # without closing its record (killed or crashed)" of a run going on
+    meta = json.loads((run_path / "run.json").read_text())
+    meta["status"] = "running"
+    meta["process"]["host"] = "BENCH-PC-A"
+    write_json_atomic(run_path / "run.json", meta)
+    run = load_run(run_path)
+    assert run.status == "incomplete" and not run.complete
+    assert run.problems == ["the run's record is open, written by mkm acquire on BENCH-PC-A: "
+                            "this PC cannot tell whether it still records there or stopped "
+                            "without closing its record (killed or crashed)"]
+
+
 def test_reused_pid_does_not_look_alive(run_path):
     # A live pid with another start time is another process: the recorder is dead (issue 12).
     meta = json.loads((run_path / "run.json").read_text())

@@ -264,6 +264,40 @@ def test_solve_csv_has_header_and_columns_and_library_forces(tmp_path, mkm_run):
     np.testing.assert_allclose(frame.force_N, expected, rtol=1e-5)  # CSV keeps 6 digits
 
 
+def test_solve_out_xlsx_is_a_workbook_of_the_same_forces(tmp_path, mkm_run):
+    # a German Excel opens a CSV in one column; `--out sweep.xlsx` wrote CSV text under that
+    # name, a file Excel refuses to open
+    out = tmp_path / "sweep.xlsx"
+    code, stdout, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
+                                 "--eps", "15%", "--out", str(out)])
+    assert code == 0 and stdout == ""
+    assert err == f"wrote {out} and sweep.json\n" + defaults_note("thickwall")
+    assert out.read_bytes()[:2] == b"PK"  # a zip, as every .xlsx is
+    frame = pd.read_excel(out)
+    assert list(frame.columns) == ["pressure_bar", "D0_mm", "t0_mm", "eps", "force_N", "valid",
+                                   "converged", "threshold_pressure_bar", "reason"]
+    assert frame.pressure_bar.dtype.kind == "f" and frame.force_N.dtype.kind == "f"  # numbers
+    expected = make_model("thickwall").predict(frame.pressure_bar, 40, 3, 0.15).force_N
+    np.testing.assert_allclose(frame.force_N, expected, rtol=1e-12)  # every digit kept
+    assert read_prediction_header(out)["n_points"] == 11
+    # the sidecar's rule: a workbook of the lab's own is kept
+    (tmp_path / "lab.xlsx").write_bytes(b"PK")
+    code, _, err = mkm_run(["fem", "solve", "--model", "thickwall", "--D0", "40", "--t0", "3",
+                            "--eps", "15%", "--out", str(tmp_path / "lab.xlsx")])
+    assert code == 2 and "lab.xlsx exists and was not written by mkm" in err
+
+
+def test_a_csv_written_under_a_workbooks_name_is_refused(tmp_path, mkm_run):
+    # `mkm fem dataset --out d.xlsx` wrote CSV text a spreadsheet refuses to open as a workbook
+    out = tmp_path / "d.xlsx"
+    code, stdout, err = mkm_run(["fem", "dataset", "--grid", "paper", "--model", "axisym",
+                                 "--out", str(out)])
+    assert code == 2 and stdout == ""
+    assert err.splitlines() == [f"mkm fem dataset: error: {out}: a workbook's name, and this "
+                                "table is written as CSV: expected a .csv name (d.csv)"]
+    assert list(tmp_path.iterdir()) == []  # refused before the solves, not after them
+
+
 @pytest.mark.parametrize("command", [["fem", "solve", "--model", "thickwall"],
                                      ["surrogate", "predict"]])
 def test_solve_and_predict_take_several_shortenings_every_pressure_at_each(command, mkm_run):

@@ -89,11 +89,19 @@ def test_bad_arguments_are_one_line(argv, message, capsys):
 
 
 def test_ni_without_driver_is_one_clear_line(tmp_path, capsys):
+    # what to install and the simulator, in words: the line began with the class of the
+    # error, `DriverMissing:`, which names nothing a lab engineer can act on
+    said = ("NI-DAQmx, NI's driver of the USB-6001, is not installed: on Windows type 'python -m "
+            "nidaqmx installdriver' (it downloads NI's installer; or get NI-DAQmx from ni.com), "
+            "then restart the PC (NI does not support the USB-6001 on Linux); without the bench, "
+            "--backend sim runs the simulated one")
     rc = main(["acquire", "--backend", "ni", "--out", str(tmp_path)])
     err = capsys.readouterr().err
-    assert rc == 1 and err.count("\n") == 1
-    assert "install NI-DAQmx" in err and "--backend sim" in err
+    assert rc == 1 and err == f"mkm acquire: error: {said}\n"
     assert [p.name for p in tmp_path.iterdir()] == ["mkm-state"]  # nothing was recorded
+    for command in ("check", "tare"):
+        assert main([command, "--backend", "ni"]) == 1
+        assert capsys.readouterr().err == f"mkm {command}: error: {said}\n"
 
 
 def test_check_without_the_device_exits_as_getting_started_says(capsys):
@@ -101,7 +109,8 @@ def test_check_without_the_device_exits_as_getting_started_says(capsys):
     # use is a hardware failure, exit 1, as every bench command (a bad configuration: exit 2)
     rc = main(["check", "--backend", "ni"])
     err = capsys.readouterr().err
-    assert rc == 1 and err.startswith("mkm check: error: NI-DAQmx driver not found")
+    assert rc == 1 and err.startswith("mkm check: error: NI-DAQmx, NI's driver of the USB-6001, "
+                                      "is not installed")
     text = " ".join((Path(__file__).parents[2] / "docs" / "getting-started.md")
                     .read_text(encoding="utf-8").split())
     assert ("a configuration it cannot take is one `mkm check: error:` line per bad value (every "
@@ -424,6 +433,36 @@ def test_report_says_a_run_vented_a_dead_one_first(tmp_path):
                         tolerance=None, surrogate_section=False).read_text(encoding="utf-8")
     assert ("the bench was found left pressurised by run old/run (started "
             "2026-12-01T10:00:00+00:00, last commanded 2.5 bar): this run vented it first") in html
+
+
+def test_a_run_still_being_recorded_is_not_identified_and_its_export_says_so(tmp_path, capsys):
+    """A second PC (or window) on the run folder while `mkm acquire` records it: `mkm
+    identify` fitted the steps so far and said `calibration.json is ready`, and `mkm export`
+    wrote them without a word, as if the run were whole."""
+    import json
+
+    from mkm.bench.run import acquire
+    from mkm.bench.storage import ProcessIdentity
+
+    config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
+    path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
+    meta = json.loads((path / "run.json").read_text(encoding="utf-8"))
+    # as run.json reads while its recorder (this process: alive) is at work
+    meta.update(status="running", reason="", process=vars(ProcessIdentity.current()))
+    (path / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    capsys.readouterr()
+    pid = ProcessIdentity.current().pid
+    assert main(["identify", str(path), "--out", str(tmp_path / "id")]) == 2
+    assert capsys.readouterr().err == (
+        f"mkm identify: error: run {path.name} is still being recorded (pid {pid}): expected a "
+        "run that has ended (identify it once its mkm acquire has ended)\n")
+    assert not (tmp_path / "id").exists()
+    assert main(["export", str(path), "--out", str(tmp_path / "run.xlsx")]) == 0
+    captured = capsys.readouterr()
+    assert captured.out == f"{tmp_path / 'run.xlsx'}\n"
+    assert captured.err == (
+        f"mkm export: note: {path.name} is still being recorded (pid {pid}): the export holds "
+        "its record so far (status running); export it again once its mkm acquire has ended\n")
 
 
 def test_demo_on_a_held_simulated_bench_is_one_line(tmp_path, capsys):

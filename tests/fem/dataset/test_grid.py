@@ -55,7 +55,6 @@ def test_grid_range_includes_its_stop():
     ("theta0_deg = 0.5", r"theta0_deg=0.5 is invalid: expected a braid angle at rest in \[1, 89\]"),
     ("L0_mm = 0", r"L0_mm=0 is invalid: expected a length at rest in \[10, 3000\] mm"),
     ("L0_mm = 5", r"L0_mm=5 is invalid: expected a length at rest in \[10, 3000\] mm"),
-    ("eps = ", "not valid TOML"),
 ])
 def test_bad_grid_gives_clear_error(text, message):
     base = {"pressure_bar": "pressure_bar = [0, 1]", "D0_mm": "D0_mm = 30", "t0_mm": "t0_mm = 2",
@@ -110,10 +109,42 @@ def test_a_grid_saved_by_a_windows_editor_is_read_or_named(tmp_path):
     assert load_grid(bom).D0_mm == (30.0, 40.0)
     ansi = tmp_path / "ansi.toml"
     ansi.write_bytes(GRID.encode() + b"# theta0 30\xb0\n")
-    with pytest.raises(ValueError, match=rf"^grid {re.escape(str(ansi))}: cannot be read as "
-                       r"UTF-8 text \(.*byte 0xb0.*\): expected 'paper' or the path of a grid "
-                       "TOML file"):
+    with pytest.raises(ValueError, match=rf"^grid {re.escape(str(ansi))} is not UTF-8 text "
+                       r"\(byte 94 is not, as a Windows code page saves an accented letter\): "
+                       r"save it as UTF-8 \(Notepad: File, Save as, Encoding UTF-8\)$"):
         load_grid(ansi)
+
+
+@pytest.mark.parametrize(("name", "data", "said"), [
+    ("comma.toml", GRID.replace("t0_mm = 2.5", "t0_mm = 2,5").encode(),
+     "is not valid TOML: Expected newline or end of document after a statement (at line 4, "
+     "column 10); a decimal comma: TOML numbers take a point, t0_mm = 2.5"),
+    ("word.toml", GRID.replace("t0_mm = 2.5", "t0_mm = two").encode(),
+     "is not valid TOML: Invalid value (at line 4, column 9); a text value goes in quotes: "
+     't0_mm = "two"'),
+    ("unicode.toml", GRID.replace("t0_mm = 2.5", "t0_mm = 2,5").encode("utf-16"),
+     "is not valid TOML: Expected newline or end of document after a statement (at line 4, "
+     "column 10); a decimal comma: TOML numbers take a point, t0_mm = 2.5"),
+    ("missing.toml", None, "does not exist: expected 'paper' or the path of a grid TOML file; "
+     "{path}.txt is there (Notepad added .txt: rename it, or save with type 'All files')"),
+], ids=["decimal-comma", "word", "utf-16", "notepad-txt"])
+def test_load_grid_in_python_says_what_the_command_line_says(tmp_path, capsys, name, data,
+                                                             said):
+    # load_grid said tomllib's words alone ('grid comma.toml: not valid TOML: Expected newline
+    # ...'), read no UTF-16 and named no Notepad .txt, where `mkm fem dataset --grid` did: one
+    # reader for both
+    path = tmp_path / name
+    if data is None:
+        path.with_name(name + ".txt").write_bytes(GRID.encode())
+    else:
+        path.write_bytes(data)
+    message = f"grid {path} {said.format(path=path)}"
+    with pytest.raises(ValueError) as caught:
+        load_grid(path)
+    assert str(caught.value) == message
+    assert main(["fem", "dataset", "--grid", str(path), "--model", "eq2", "--out",
+                 str(tmp_path / "d.csv"), "--cache", str(tmp_path / "cache")]) == 2
+    assert capsys.readouterr().err == f"mkm fem dataset: error: {message}\n"
 
 
 def test_a_grid_file_notepad_saved_as_unicode_or_with_a_decimal_comma_on_the_command_line(
