@@ -327,12 +327,12 @@ class ForceCeiling:
         offset_bar, gain = config.regulator.reading_bounds()
         high_bar = reading_bar + offset_bar + gain * reading_bar
         friction = self.friction_fraction
-        most = (1.0 + friction) * float(np.interp(high_bar, self.pressure_bar, self.force_N))
+        most = (1.0 + friction) * self.most_rising_N(config, reading_bar)
         where = (f"at {high_bar:.3f} bar, the reading at its accuracy, with its 95 % band and "
                  f"{100 * friction:.3g} % for the braid's friction")
-        peak_bar = peak_bar + offset_bar + gain * peak_bar
-        rise = float(np.interp(peak_bar, self.pressure_bar, self.force_N))
+        rise = self.most_rising_N(config, peak_bar)
         if rise < most:
+            peak_bar = peak_bar + offset_bar + gain * peak_bar
             most, where = rise, (f"at {peak_bar:.3f} bar, the highest reading since the vent "
                                  "at its accuracy, with its 95 % band: the braid holds no more "
                                  "than that pressure pulled")
@@ -341,6 +341,14 @@ class ForceCeiling:
             most *= 1.0 + margin
             where += f", plus safety.overforce_margin_fraction={margin:g}"
         return most, where
+
+    def most_rising_N(self, config, reading_bar: float) -> float:
+        """The most [N] the muscle pulls on a rise to the monitor's ``reading_bar`` [bar], and
+        held at any pressure after it (the braid holds no more than that pressure pulled): the
+        ceiling at the reading taken its declared accuracy high."""
+        offset_bar, gain = config.regulator.reading_bounds()
+        high_bar = reading_bar + offset_bar + gain * reading_bar
+        return float(np.interp(high_bar, self.pressure_bar, self.force_N))
 
     def least_rising_N(self, config, reading_bar: float) -> float:
         """The least [N] the muscle pulls on a rise to the monitor's ``reading_bar`` [bar]: the
@@ -399,9 +407,10 @@ def ceiling_lines(config, ceiling: ForceCeiling) -> tuple[list[str], str]:
 
 def _below(ceiling: ForceCeiling, config) -> float:
     """The highest pressure [bar], to 0.05 bar, on the rise to which the identified muscle
-    surely pulls less than the force interlock's limit."""
+    surely pulls less than the force interlock's limit (:meth:`ForceCeiling.most_rising_N`:
+    a run whose muscle may pull the limit there may trip as well)."""
     grid = np.arange(0.0, config.regulator.max_pressure_bar + 1e-9, 0.05)
-    under = [p for p in grid if ceiling.least_rising_N(config, p) < config.force_limit_N]
+    under = [p for p in grid if ceiling.most_rising_N(config, p) < config.force_limit_N]
     return float(round(max(under), 2)) if under else 0.0
 
 

@@ -842,12 +842,13 @@ class Acquisition:
 
     def held_said(self) -> str:
         """The pressure :meth:`pressurised` found, in words: the command, and the last reading
-        where it is above the vent threshold and the command by more than
-        ``safety.pressure_tolerance_bar`` (one at its command says nothing more)."""
+        where it is above the vent threshold and, with a pressure commanded, above it by more
+        than ``safety.pressure_tolerance_bar`` (one at its command says nothing more; with 0
+        bar commanded the reading is why the muscle is held pressurised)."""
         safety = self.config.safety
+        above = self.command_bar + safety.pressure_tolerance_bar if self.command_bar > 0 else 0.0
         read = (f" and {self.measured_bar:.3f} bar last read"
-                if self.measured_bar > max(safety.vent_below_bar, self.command_bar
-                                           + safety.pressure_tolerance_bar) else "")
+                if self.measured_bar > max(safety.vent_below_bar, above) else "")
         return f"{self.command_bar:g} bar commanded{read}"
 
     def hung_said(self) -> str:

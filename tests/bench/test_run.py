@@ -1139,6 +1139,15 @@ def test_a_read_timeout_while_the_muscle_exhausts_trips_the_read_interlock(confi
     assert float(found.group(1)) == pytest.approx(last_bar, abs=5e-4)
     assert 0.5 < last_bar < 1.0  # exhausting: above the 0.05 bar vent threshold
     assert run.meta.vent_check["verified"]
+    # near the end of the fall, 0.108 bar read: above the vent threshold, within the 0.15 bar
+    # of safety.pressure_tolerance_bar of the command, the reason said '0 bar commanded' alone
+    c = config.replace(**PRECONDITIONED, sim={"faults": {"read_timeout_at_s": 7.9}})
+    result, run = record(c, tmp_path / "falling")
+    last_bar = run.samples["pressure_bar"][run.samples["sample"] == 78].iloc[0]
+    assert c.safety.vent_below_bar < last_bar < c.safety.pressure_tolerance_bar
+    assert result.status == "failed" and result.reason.startswith(
+        f"read interlock: no reading within 2 s with 0 bar commanded and {last_bar:.3f} bar "
+        "last read at 7.9 s ("), result.reason
     # vented (the last reading below the threshold), a timeout is retried as before
     c = config.replace(**PRECONDITIONED, sim={"faults": {"read_timeout_at_s": 10.0}})
     result, run = record(c, tmp_path / "later")
