@@ -152,12 +152,13 @@ FORCE_LIMITS = (
 
 
 def lowest_step(config) -> tuple[float, float]:
-    """The lowest planned pressure [bar] and the force [N] the muscle pulls there at its rest
-    length (Equation 2 on the braid's diameter, the thick-wall model's force at eps 0): the
-    force the settle and noise limits and the load cell are judged against, at eps 0 as the
-    cell is, so every run of the muscle on one configuration says the same (at eps > 0 the
-    steps near the threshold pull a small share of any muscle's force)."""
-    low_bar = min(config.sequence.pressures_bar)
+    """The lowest planned pressure above 0 bar [bar] and the force [N] the muscle pulls there
+    at its rest length (Equation 2 on the braid's diameter, the thick-wall model's force at eps
+    0): the force the settle and noise limits and the load cell are judged against, at eps 0 as
+    the cell is, so every run of the muscle on one configuration says the same (at eps > 0 the
+    steps near the threshold pull a small share of any muscle's force). A 0 bar step reads the
+    cell's zero, no pull; a plan of 0 bar alone gives ``(0.0, 0.0)``."""
+    low_bar = min((p for p in config.sequence.pressures_bar if p > 0), default=0.0)
     return low_bar, expected_force_N(config, low_bar, eps=0.0)
 
 

@@ -61,7 +61,7 @@ def settle_warning(tare_std_N: float, config: BenchConfig) -> str:
             f"settle.max_force_std_N={st.max_force_std_N:g}: no step can settle, each will wait "
             f"settle.timeout_s={st.timeout_s:g} s and be recorded settled = false; ")
     low_bar, force_N = lowest_step(config)
-    if 3 * tare_std_N > LIMIT_SHARE * force_N:
+    if force_N > 0 and 3 * tare_std_N > LIMIT_SHARE * force_N:
         return (said + f"a limit this cell can settle under, about {3 * tare_std_N:.2g} N, is "
                 f"{percent(3 * tare_std_N / force_N)} % of the {force_N:.2g} N the muscle pulls "
                 f"at the lowest step, {low_bar:g} bar: the cell is too noisy for this muscle, use "
@@ -304,7 +304,7 @@ def shift_warning(tare: dict, config: BenchConfig) -> str:
     does not see it; or the configured zero is not the cell's. Or ""."""
     low_bar, force_N = lowest_step(config)
     shift_N, cell = tare["shift_N"], config.loadcell
-    if not abs(shift_N) > LIMIT_SHARE * force_N:
+    if force_N <= 0 or not abs(shift_N) > LIMIT_SHARE * force_N:
         return ""
     return (f"the tare's zero is {shift_N:+.2f} N from loadcell.offset_V={cell.offset_V:g} V, "
             f"{percent(abs(shift_N) / force_N)} % of the {force_N:.2g} N the muscle pulls at the "

@@ -565,11 +565,22 @@ def _simulated_badge(r: _Run) -> str:
 
 def _past_braid_lock(r: _Run):
     """The braid lock (:func:`mkm.fem.eq2.braid_lock`) a run is held at or past, else None
-    (None too where the calibration has no FE angle: no lock known)."""
+    (None too where the calibration has no FE angle: no lock known); at the braid angle the
+    calibration identified on the run's muscle, which the models take in place of a declared
+    one."""
     from mkm.fem.eq2 import braid_lock
+    from mkm.identify.band import identified_entry
 
+    found = identified_entry(r.calibration) if _identified_muscle(r.calibration,
+                                                                  r.muscle) else None
     try:
-        lock = braid_lock(r.muscle.theta0_deg, r.calibration)
+        if found and found[1].get("theta0_deg") is not None:
+            lock = dataclasses.replace(
+                braid_lock(float(found[1]["theta0_deg"])),
+                source=f"the braid angle of the muscle identified in {r.calibration.path.name} "
+                       f"({found[0]})")
+        else:
+            lock = braid_lock(r.muscle.theta0_deg, r.calibration)
     except ValueError:
         return None
     return lock if r.muscle.eps >= lock.eps_max else None

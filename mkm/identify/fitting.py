@@ -166,6 +166,11 @@ def by_length(runs) -> dict[float, list[int]]:
     return groups
 
 
+class NoValidForce(RuntimeError):
+    """A static model gives no valid force for a run at the values asked (past its braid lock,
+    or its solve failed there)."""
+
+
 class StaticSource:
     """Static force tables of the runs at the internal ``values`` (see the module doc)."""
 
@@ -231,7 +236,7 @@ class ModelStatic(StaticSource):
         out = []
         for grid, run, (pred, _) in zip(grids, runs, solved, strict=True):
             if not pred.valid.all():
-                raise RuntimeError(f"{self.name} gives no valid force for run {run.name} at "
+                raise NoValidForce(f"{self.name} gives no valid force for run {run.name} at "
                                    + ", ".join(f"{k}={v:.4g}" for k, v in values.items()))
             out.append((grid, np.maximum(pred.force_N, 0.0)))
         return out

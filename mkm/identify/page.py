@@ -83,8 +83,14 @@ def report_section(run_dirs, out: Path, calibration: Calibration | None = None) 
     static = fitting.ModelStatic(spec)
     nominal = fitting.nominal_muscle(static.spec, runs, Calibration.shipped())
     for k, run in enumerate(runs, start=1):
-        after = fitting.step_predictions(static, [run], identified)[0]
-        before = fitting.step_predictions(static, [run], nominal)[0]
+        try:
+            after = fitting.step_predictions(static, [run], identified)[0]
+            before = fitting.step_predictions(static, [run], nominal)[0]
+        except fitting.NoValidForce as exc:
+            # past the identified muscle's braid lock: no branch to draw, no threshold
+            parts.append(f'<p class="note">Run {k} ({esc(run.name)}, eps = '
+                         f"{100 * run.eps:.1f} %): not compared, {esc(str(exc))}.</p>")
+            continue
         path = save_figure(_figure(run, before, after, k), Path(out) / f"identified_run{k}.png")
         parts.append(figure_html(path, f"Run {k} ({esc(run.name)}, eps = {100 * run.eps:.1f} %)."
                                  " Left: measured steps (filled up, open down) and the branches "

@@ -73,6 +73,19 @@ def test_hold_average_is_the_mean_and_std_of_the_hold_samples(config, tmp_path):
         assert step.force_N_std == pytest.approx(hold["force_N"].std(ddof=1), rel=1e-3)
 
 
+def test_a_plan_with_a_0_bar_step_runs_and_is_judged_at_its_lowest_pull(config, tmp_path):
+    # a plan starting at 0 bar ended right after its tare (ZeroDivisionError: the tare's shift
+    # was judged against the 0 N the muscle pulls at 0 bar); its 0.5 bar step is the lowest
+    # pull, and the check at it the same as the plan without the 0 bar step
+    from mkm.bench.preflight import lowest_step
+
+    zero = config.replace(sequence={"pressures_bar": (0.0, 0.5, 1.0)})
+    without = config.replace(sequence={"pressures_bar": (0.5, 1.0)})
+    assert lowest_step(zero) == lowest_step(without) and lowest_step(zero)[0] == 0.5
+    run = load_run(acquire(zero, out_root=tmp_path).path)
+    assert run.complete and run.steps["set_pressure_bar"].iloc[0] == 0.0
+
+
 def test_validate_tare_limits(config):
     rng = np.random.default_rng(0)
     good = 0.015 + 0.002 * rng.standard_normal(50)

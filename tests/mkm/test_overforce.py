@@ -198,6 +198,32 @@ def test_a_run_past_the_identified_muscles_braid_lock_is_refused(calibration, tm
                                             config.regulator.max_pressure_bar))
 
 
+def test_a_run_past_the_identified_lock_has_the_reports_banner(calibration, tmp_path,
+                                                              mkm_run):
+    # recorded past the identified lock with --allow-past-lock, the report's banner was
+    # silent: it took the lock at the FE model's calibrated angle (eps_max 0.311)
+    steep = json.loads(calibration.read_text())
+    steep["thickwall"]["theta0_deg"] = 37.6
+    path = calibration.parent / "steep.json"
+    path.write_text(json.dumps(steep), encoding="utf-8")
+    runs = tmp_path / "runs"
+    code, _, _ = mkm_run(["acquire", "--backend", "sim", "--eps", "0.28", "--pressures",
+                          "0,0.5", "--out", str(runs), "--calibration", str(path),
+                          "--allow-past-lock"])
+    assert code == 0
+    code, out, err = mkm_run(["report", str(next(runs.iterdir())), "--models", "thickwall",
+                              "--calibration", str(path), "--out", str(tmp_path / "report")])
+    assert code == 0, err
+    html = (tmp_path / "report" / "report.html").read_text(encoding="utf-8")
+    assert ("Run 1 is held at eps 28.0 %, past the braid lock: eps_max 0.271 (the braid "
+            "reaches its locking angle 54.7 deg from theta0 37.60 deg, the braid angle of the "
+            "muscle identified in steep.json (thickwall))") in html
+    # the identified muscle's section ended the report in a traceback ("thickwall gives no
+    # valid force for run ..."): the run is said not compared there
+    assert re.search(r"Run 1 \([^)]*, eps = 28\.0 %\): not compared, thickwall gives no valid "
+                     r"force for run", html)
+
+
 def test_a_muscle_identified_over_several_lengths_bounds_a_run_of_any_of_them(tmp_path):
     # the runs of one tube at two lengths: a run of the second length is that muscle too
     both = json.loads(json.dumps(CALIBRATION))
