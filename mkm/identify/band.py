@@ -93,10 +93,35 @@ def identified_tube(calibration) -> tuple[float, float] | None:
 def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
                     cache_dir=None):
     """The 95 % half-width [N] of each force ``force_N`` the model of ``spec`` (a
-    :class:`mkm.registry.Spec`) predicted with ``calibration`` at the inputs; None where the
-    calibration holds no identified muscle of this model, or the spec overrides the identified
-    angle or rubber. Its solves are kept in the prediction cache ``cache_dir``
-    (:mod:`mkm.prediction_cache`; None: no cache)."""
+    :class:`mkm.registry.Spec`) predicted with ``calibration`` at the inputs, linearised: the
+    band's lower end (:func:`prediction_ends` gives its upper end too, which differs near the
+    threshold); None where the calibration holds no identified muscle of this model, or the
+    spec overrides the identified angle or rubber. Its solves are kept in the prediction cache
+    ``cache_dir`` (:mod:`mkm.prediction_cache`; None: no cache)."""
+    ends = prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
+                           cache_dir)
+    return None if ends is None else ends[0]
+
+
+def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
+                    cache_dir=None):
+    """``(below, above)``: how far [N] the 95 % band of each force ``force_N`` reaches below
+    and above it (:func:`prediction_band`'s arguments; None where it gives None).
+
+    ``below`` is the linearisation, and so is ``above`` where the identified muscle pulls
+    beyond the threshold's own uncertainty: at a pressure at least :data:`Z95` standard
+    deviations of the threshold pressure P* (its sensitivities through the covariance) above
+    the identified P*, fewer than 2.5 % of the muscles the intervals hold are slack, and the
+    force ``A (P - P*)`` is linear in the parameters over the band. Nearer the threshold, or
+    below it, the force is ``max(0, A (P - P*))``: the identified muscle's own sensitivities
+    say nothing of the muscles that pull where it is slack (none at all below P*, where a
+    linearised band is 0), and a step of a tenth of a standard deviation may cross P*. There
+    ``above`` takes the parameters' share from the muscle :data:`Z95` standard deviations of P*
+    lower, the most likely such one (the covariance's point along P*'s gradient: one solve
+    more), solved through the kink, with the linearised share the threshold does not move
+    (orthogonal to it in the covariance's metric); the terms, the load cell and the misfit as
+    below. A model that reports no threshold (``threshold_pressure_bar``) is linear
+    throughout."""
     found = identified_entry(calibration) if calibration is not None else None
     if found is None or "band" not in found[1]["identified"]:
         return None
@@ -112,7 +137,7 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
               **dict(zip(names, band["values"], strict=True))}
     inputs = {"D0_mm": D0_mm, "t0_mm": t0_mm}
 
-    def force_at(shift: dict) -> np.ndarray:
+    def solved(shift: dict) -> tuple[np.ndarray, np.ndarray]:
         # a term's shift names every fitted parameter; the static force takes the static ones,
         # within what a rubber and a gap can be: a shift beyond (the other braid's pull on a
         # natural rubber's small C01 share) is the refit stopped there, as the interval is
@@ -124,25 +149,44 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
             moved["gap_mm"] = max(moved["gap_mm"], 0.0)
         geometry = {g: (moved[g] if g in shift or g in names else inputs[g])
                     for g in fitting.GEOMETRY}
-        return _force(spec, calibration, moved, pressure_bar, geometry["D0_mm"],
-                      geometry["t0_mm"], eps, cache_dir)
+        return _solved(spec, calibration, moved, pressure_bar, geometry["D0_mm"],
+                       geometry["t0_mm"], eps, cache_dir)
+
+    def force_at(shift: dict) -> np.ndarray:
+        return solved(shift)[0]
 
     # the force at the band's own (unrounded) values: the differences are taken from it
-    base = force_at({})
+    base, threshold = solved({})
     steps = [STEP_SD * np.sqrt(max(covariance[k, k], 0.0)) or 1e-6 for k in range(len(names))]
-    gradient = [(force_at({name: step}) - base) / step
-                for name, step in zip(names, steps, strict=True)]
-    G = np.array(gradient).reshape(len(names), -1)
-    variance = np.einsum("in,ij,jn->n", G, covariance, G) if names else np.zeros(base.size)
+    stepped = [solved({name: step}) for name, step in zip(names, steps, strict=True)]
+    G = np.array([(f - base) / step for (f, _), step in zip(stepped, steps, strict=True)]
+                 ).reshape(len(names), -1)
+    linear = np.einsum("in,ij,jn->n", G, covariance, G) if names else np.zeros(base.size)
     # a term is evaluated where it moves the parameters, not linearised: it may start the
     # force at a step the identified muscle is slack at (a threshold moved)
+    others = np.zeros(base.size)
     for term in band.get("terms", ()):
         moved = force_at(term["shift"]) - base
-        variance = variance + moved**2 / (3.0 if term["kind"] == "one-sided" else 1.0)
+        others = others + moved**2 / (3.0 if term["kind"] == "one-sided" else 1.0)
     tolerance = float(band.get("sensitivity_tolerance", 0.0))
-    variance = variance + (tolerance / np.sqrt(3.0) * np.ravel(force_N)) ** 2
-    variance = variance + float(band.get("misfit_rms_N", 0.0)) ** 2
-    return Z95 * np.sqrt(variance).reshape(np.shape(force_N))
+    others = others + (tolerance / np.sqrt(3.0) * np.ravel(force_N)) ** 2
+    others = others + float(band.get("misfit_rms_N", 0.0)) ** 2
+    shape = np.shape(force_N)
+    below = Z95 * np.sqrt(linear + others)
+    above = below.copy()
+    # P*'s gradient: the same steps' thresholds (one per sweep, NaN where the braid locks)
+    g = np.array([np.nanmean(t) - np.nanmean(threshold) if np.isfinite(t).any() else np.nan
+                  for _, t in stepped]) / np.array(steps) if names else np.zeros(0)
+    threshold_bar = float(np.nanmean(threshold)) if np.isfinite(threshold).any() else np.nan
+    spread = float(np.sqrt(g @ covariance @ g)) if names and np.isfinite(g).all() else 0.0
+    near = np.asarray(pressure_bar, dtype=float).ravel() - threshold_bar < Z95 * spread
+    if spread > 0 and near.any():
+        towards = covariance @ g / spread  # one standard deviation of P*, lowered by -towards
+        lower, _ = solved(dict(zip(names, -Z95 * towards, strict=True)))
+        along = np.maximum(np.nan_to_num(lower - base), 0.0) / Z95
+        across = np.maximum(linear - (G.T @ towards) ** 2, 0.0)
+        above = np.where(near, Z95 * np.sqrt(along**2 + across + others), below)
+    return below.reshape(shape), above.reshape(shape)
 
 
 #: the over-force interlock's ceiling is tabulated every this much [bar], up to
@@ -176,14 +220,15 @@ def config_ceiling(config, calibration_file=None):
 def force_ceiling(calibration, muscle, max_pressure_bar: float, given: str = "--calibration"):
     """The most the muscle ``calibration`` identified (the calibration.json ``mkm identify``
     writes) pulls at ``muscle``'s eps, at pressures up to :data:`CEILING_TOP` x
-    ``max_pressure_bar`` [bar]: its identified static force plus the 95 % band
-    (:func:`prediction_band`), with the upper end of its friction's interval (the bench's
+    ``max_pressure_bar`` [bar]: its identified static force plus the 95 % band's upper
+    end (:func:`prediction_ends`: near and below the threshold, that of the muscles that pull
+    where the identified one is slack), with the upper end of its friction's interval (the bench's
     :data:`mkm.bench.preflight.FRICTION_FRACTION` where identify fitted none): the
     :class:`mkm.bench.preflight.ForceCeiling` that arms ``mkm acquire``'s over-force
-    interlock, with the least it pulls (the static force less the band). ``ValueError`` in one
-    line, naming the file as ``given`` names it, for a calibration that holds no identified
-    muscle, or one identified on another tube or rest length than ``muscle`` (a
-    :class:`mkm.fem.muscle.Muscle`) declares."""
+    interlock, with the least it pulls (the static force less the band's lower end).
+    ``ValueError`` in one line, naming the file as ``given`` names it, for a calibration that
+    holds no identified muscle, or one identified on another tube or rest length than
+    ``muscle`` (a :class:`mkm.fem.muscle.Muscle`) declares."""
     from mkm.bench.preflight import FRICTION_FRACTION, ForceCeiling
     from mkm.registry import parse_spec
 
@@ -222,9 +267,9 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float, given: str = "--
     model = spec.build(calibration)
     predicted = model.predict(pressure_bar, tube[0], tube[1], muscle.eps)
     force = np.asarray(predicted.force_N, dtype=float)
-    band = prediction_band(spec, calibration, force, pressure_bar, tube[0], tube[1],
+    ends = prediction_ends(spec, calibration, force, pressure_bar, tube[0], tube[1],
                            muscle.eps)
-    if band is None:
+    if ends is None:
         raise ValueError(f"{given} {calibration.path}: no prediction band for its "
                          f"identified model {key}")
     friction = next((p["value"] if p.get("ci_high") is None else p["ci_high"]
@@ -233,9 +278,10 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float, given: str = "--
                      and p.get("value") is not None), None)
     # where the model gives no valid force (past its lock) nothing bounds the force, and it
     # pulls none for sure
-    known = np.asarray(predicted.valid, dtype=bool) & np.isfinite(force + band)
-    most = np.where(known, np.maximum(force, 0.0) + band, np.inf)
-    least = np.where(known, np.maximum(force - band, 0.0), 0.0)
+    below, above = ends
+    known = np.asarray(predicted.valid, dtype=bool) & np.isfinite(force + above)
+    most = np.where(known, np.maximum(force, 0.0) + above, np.inf)
+    least = np.where(known, np.maximum(force - below, 0.0), 0.0)
     return ForceCeiling(tuple(map(float, pressure_bar)), tuple(map(float, most)),
                         tuple(map(float, least)),
                         float(FRICTION_FRACTION if friction is None else friction),
@@ -320,7 +366,9 @@ def judge_steps(error, band, noise) -> dict:
             "run_inside": bool((error <= run_reach).all())}
 
 
-def _force(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps, cache_dir=None):
+def _solved(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps, cache_dir=None):
+    """The force [N] of the model of ``spec`` at the parameters ``values``, and its threshold
+    pressure [bar] (NaN for a model that reports none)."""
     from mkm.prediction_cache import cached_predict
 
     C10, C01 = fitting.rubber(values)
@@ -328,4 +376,7 @@ def _force(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps, cache_dir
     model = spec.with_params(theta0_deg=float(values["theta0_deg"]), C10_MPa=C10,
                              C01_MPa=C01, **gap).build(calibration)
     prediction, _ = cached_predict(model, pressure_bar, D0_mm, t0_mm, eps, cache_dir=cache_dir)
-    return np.asarray(prediction.force_N, dtype=float)
+    force = np.asarray(prediction.force_N, dtype=float)
+    threshold = prediction.extras.get("threshold_pressure_bar")
+    return force, (np.full(force.shape, np.nan) if threshold is None
+                   else np.asarray(threshold, dtype=float).reshape(force.shape))

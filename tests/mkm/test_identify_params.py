@@ -25,7 +25,7 @@ from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
-from mkm.identify.band import Z95, check_heldout, prediction_band
+from mkm.identify.band import Z95, check_heldout, prediction_band, prediction_ends
 from mkm.identify.fitting import Fit
 from mkm.identify.intervals import bootstrap, robust_covariance
 from mkm.identify.procedure import _identifiability, _zero_unpinned, ratio_edge_note
@@ -669,3 +669,46 @@ def test_the_surrogates_box_is_asked_for_the_rubber_the_runs_declare():
     assert source.outside([], natural, fits_rubber=False) == [
         "C01_MPa=0.03 not in [0.0314, 0.0942]", "C10_MPa=0.3 not in [0.0347, 0.1041]"]
     assert source.outside([], internal_rubber(0.05, 0.05), fits_rubber=False) == []
+
+
+def test_the_bands_upper_end_near_the_threshold_is_the_muscles_that_pull_there(tmp_path):
+    # a rubber identified to +-8 % (1 sd): its threshold pressure P* is uncertain by about as
+    # much, and max(0, A (P - P*)) is not linear in the rubber across P*. The force falls with
+    # the rubber, so the 97.5 % quantile of the force is that of the rubber 1.96 sd softer,
+    # exactly: below the identified P* the linearised band was 0 N (the identified muscle
+    # slack, its steps too) where that muscle pulls; far above P*, the band is the linear one
+    scale, sd = 1.1, 0.088
+    data = json.loads(SHIPPED.read_text(encoding="utf-8"))
+    data["thickwall"] = {**data["thickwall"], "theta0_deg": 33.0,
+                         "C10_MPa": scale * SILASTIC_S.C10_MPa,
+                         "C01_MPa": scale * SILASTIC_S.C01_MPa, "identified": {"band": {
+                             "parameters": ["rubber_scale"], "values": [scale],
+                             "covariance": [[sd**2]]}}}
+    path = tmp_path / "calibration.json"
+    path.write_text(json.dumps(data), encoding="utf-8")
+    D0, t0, eps = 30.0, 3.0, 0.24
+
+    def model(s):
+        return make_model("thickwall", theta0_deg=33.0, C10_MPa=s * SILASTIC_S.C10_MPa,
+                          C01_MPa=s * SILASTIC_S.C01_MPa)
+
+    threshold = float(model(scale).predict(np.array([1.0]), D0, t0, eps)
+                      .extras["threshold_pressure_bar"][0])
+    P = np.linspace(threshold - 0.3, threshold + 1.5, 37)
+    F = model(scale).predict(P, D0, t0, eps).force_N
+    softer = model(scale - Z95 * sd).predict(P, D0, t0, eps).force_N
+    below, above = prediction_ends(parse_spec("thickwall"), Calibration.load(path), F, P, D0,
+                                   t0, eps)
+    spread = float(model(scale - sd).predict(np.array([1.0]), D0, t0, eps)
+                   .extras["threshold_pressure_bar"][0])
+    near = P - threshold < Z95 * (threshold - spread)  # about: P* is near linear in the rubber
+    assert near.sum() > 10 and (~near).sum() > 10
+    slack_but_pulls = (F == 0) & (softer > 0)
+    assert slack_but_pulls.sum() >= 3
+    np.testing.assert_allclose(above[near], (softer - F)[near], rtol=1e-3, atol=1e-6)
+    np.testing.assert_array_equal(above[~near], below[~near])
+    # far above P* the linear band is that softer muscle's too, to its curvature
+    np.testing.assert_allclose(above[-1], (softer - F)[-1], rtol=0.02)
+    assert np.all(below[slack_but_pulls] == 0.0)
+    np.testing.assert_array_equal(below, prediction_band(
+        parse_spec("thickwall"), Calibration.load(path), F, P, D0, t0, eps))
