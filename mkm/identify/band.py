@@ -137,7 +137,7 @@ def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
               **dict(zip(names, band["values"], strict=True))}
     inputs = {"D0_mm": D0_mm, "t0_mm": t0_mm}
 
-    def solved(shift: dict) -> tuple[np.ndarray, np.ndarray]:
+    def solved(shift: dict, at=pressure_bar) -> tuple[np.ndarray, np.ndarray]:
         # a term's shift names every fitted parameter; the static force takes the static ones,
         # within what a rubber and a gap can be: a shift beyond (the other braid's pull on a
         # natural rubber's small C01 share) is the refit stopped there, as the interval is
@@ -149,7 +149,7 @@ def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
             moved["gap_mm"] = max(moved["gap_mm"], 0.0)
         geometry = {g: (moved[g] if g in shift or g in names else inputs[g])
                     for g in fitting.GEOMETRY}
-        return _solved(spec, calibration, moved, pressure_bar, geometry["D0_mm"],
+        return _solved(spec, calibration, moved, at, geometry["D0_mm"],
                        geometry["t0_mm"], eps, cache_dir)
 
     def force_at(shift: dict) -> np.ndarray:
@@ -181,11 +181,24 @@ def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
     spread = float(np.sqrt(g @ covariance @ g)) if names and np.isfinite(g).all() else 0.0
     near = np.asarray(pressure_bar, dtype=float).ravel() - threshold_bar < Z95 * spread
     if spread > 0 and near.any():
-        towards = covariance @ g / spread  # one standard deviation of P*, lowered by -towards
-        lower, _ = solved(dict(zip(names, -Z95 * towards, strict=True)))
-        along = np.maximum(np.nan_to_num(lower - base), 0.0) / Z95
-        across = np.maximum(linear - (G.T @ towards) ** 2, 0.0)
-        above = np.where(near, Z95 * np.sqrt(along**2 + across + others), below)
+        # the muscle Z95 sd of P* lower pulls; the force's own gradient there points to the
+        # most the band's ellipse holds (for a force linear in the parameters, its 97.5 %
+        # quantile exactly; near the lock the force is convex in the braid angle)
+        start = -Z95 * covariance @ g / spread
+        first, _ = solved(dict(zip(names, start, strict=True)))
+        rise = np.array([(solved(dict(zip(names, start + step * np.eye(len(names))[k],
+                                           strict=True)))[0] - first) / step
+                         for k, step in enumerate(steps)])
+        most = first.copy()
+        pressures = np.asarray(pressure_bar, dtype=float).ravel()
+        for i in np.flatnonzero(near):
+            reach = float(np.sqrt(max(rise[:, i] @ covariance @ rise[:, i], 0.0)))
+            if np.isfinite(reach) and reach > 0:
+                point = Z95 * covariance @ rise[:, i] / reach
+                most[i] = np.nanmax([first[i], solved(dict(zip(names, point, strict=True)),
+                                                      pressures[i:i + 1])[0][0]])
+        along = np.maximum(np.nan_to_num(most - base), 0.0)
+        above = np.where(near, np.sqrt(along**2 + Z95**2 * others), below)
     return below.reshape(shape), above.reshape(shape)
 
 
