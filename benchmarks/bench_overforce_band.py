@@ -68,6 +68,7 @@ def main(argv=None) -> int:
     parser.add_argument("--out", help="write the JSON document here too")
     args = parser.parse_args(argv)
     rng = np.random.default_rng(args.seed)
+    record = provenance()  # the code that ran, before any file of it is written
     truth = draw(rng)
     runs, live = [], []
     with tempfile.TemporaryDirectory() as tmp:
@@ -109,7 +110,7 @@ def main(argv=None) -> int:
                              "status": str(result.status), "reason": result.reason})
     sound = [r for r in live if not r["instruments"]]
     low = [r for r in live if r["instruments"]]
-    document = {"provenance": provenance(), "seed": args.seed, "truth": truth,
+    document = {"provenance": record, "seed": args.seed, "truth": truth,
                 "identified": {"band": band, "theta0_deg": entry["theta0_deg"]},
                 "eps_at": [{"where": w, "share": s, "eps": e}
                            for (w, s), e in zip(EPS_AT, eps_at, strict=True)],

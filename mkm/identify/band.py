@@ -37,6 +37,10 @@ from mkm.identify import fitting
 Z95 = 1.959964
 #: the finite-difference step, in standard deviations of the parameter
 STEP_SD = 0.1
+#: the band's upper end is the linearisation where the force on the band's ellipse, along the
+#: gradient, parts from it by at most this share of the band (:func:`prediction_ends`): a band
+#: 2 % wider than a normal one's 1.96 standard deviations holds 97.7 % of it, not 97.5 %
+LINEAR_TOLERANCE = 0.02
 #: the level of a held-out run's joint statement (:func:`check_heldout`)
 RUN_LEVEL = 0.95
 
@@ -108,20 +112,24 @@ def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
     """``(below, above)``: how far [N] the 95 % band of each force ``force_N`` reaches below
     and above it (:func:`prediction_band`'s arguments; None where it gives None).
 
-    ``below`` is the linearisation, and so is ``above`` where the identified muscle pulls
-    beyond the threshold's own uncertainty: at a pressure at least :data:`Z95` standard
-    deviations of the threshold pressure P* (its sensitivities through the covariance) above
-    the identified P*, fewer than 2.5 % of the muscles the intervals hold are slack, and the
-    force ``A (P - P*)`` is linear in the parameters over the band. Nearer the threshold, or
-    below it, the force is ``max(0, A (P - P*))``: the identified muscle's own sensitivities
-    say nothing of the muscles that pull where it is slack (none at all below P*, where a
-    linearised band is 0), and a step of a tenth of a standard deviation may cross P*. There
-    ``above`` takes the parameters' share from the muscle :data:`Z95` standard deviations of P*
-    lower, the most likely such one (the covariance's point along P*'s gradient: one solve
-    more), solved through the kink, with the linearised share the threshold does not move
-    (orthogonal to it in the covariance's metric); the terms, the load cell and the misfit as
-    below. A model that reports no threshold (``threshold_pressure_bar``) is linear
-    throughout."""
+    ``below`` is the linearisation. ``above`` is the most a muscle of the parameters' 95 %
+    ellipse pulls (for a force linear in them, its 97.5 % quantile exactly), the terms, the load
+    cell and the misfit added as below:
+
+    - near the threshold pressure P*, less than :data:`Z95` standard deviations of P* (its
+      sensitivities through the covariance) above the identified P*, or below it, the force is
+      ``max(0, A (P - P*))``, not linear in the parameters: the identified muscle's own
+      sensitivities say nothing of the muscles that pull where it is slack (a linearised band
+      is 0 N below P*), and a step of a tenth of a standard deviation may cross P*. There the
+      muscle :data:`Z95` standard deviations of P* lower is solved, through the kink, and the
+      one its own gradient points to on the ellipse (one sweep and one per parameter more, and
+      one solve per such pressure);
+    - elsewhere, the force on the ellipse where the linearisation puts its most (one solve per
+      direction, pressures of about one direction sharing it): where it parts from the
+      linearised end by more than :data:`LINEAR_TOLERANCE` of the band (near the braid lock
+      the force is convex in the braid angle) it is taken, else the linearisation.
+
+    A model that reports no threshold (``threshold_pressure_bar``) has no P* to be near."""
     found = identified_entry(calibration) if calibration is not None else None
     if found is None or "band" not in found[1]["identified"]:
         return None
@@ -180,17 +188,33 @@ def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
     threshold_bar = float(np.nanmean(threshold)) if np.isfinite(threshold).any() else np.nan
     spread = float(np.sqrt(g @ covariance @ g)) if names and np.isfinite(g).all() else 0.0
     near = np.asarray(pressure_bar, dtype=float).ravel() - threshold_bar < Z95 * spread
+    pressures = np.asarray(pressure_bar, dtype=float).ravel()
+    linear_end = np.sqrt(linear)
+    if names and (far := ~near & (linear_end > 0)).any():
+        # the ellipse's point along each pressure's gradient, in standard deviations: pressures
+        # whose directions round alike share one solve, each taking its own linear part
+        sd = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+        directions = (covariance @ G / np.where(linear_end > 0, linear_end, 1.0)).T
+        rounded = np.round(directions / np.where(sd > 0, sd, 1.0) * 20) / 20
+        for key in np.unique(rounded[far], axis=0):
+            at = far & (rounded == key).all(axis=1)
+            point = Z95 * directions[at].mean(axis=0)
+            moved, _ = solved(dict(zip(names, point, strict=True)), pressures[at])
+            curvature = moved - base[at] - G[:, at].T @ point
+            end = Z95 * linear_end[at] + curvature
+            bent = np.isfinite(end) & (np.abs(curvature) > LINEAR_TOLERANCE * Z95
+                                       * linear_end[at])
+            above[at] = np.where(bent, np.sqrt(np.maximum(end, 0.0) ** 2
+                                               + Z95**2 * others[at]), above[at])
     if spread > 0 and near.any():
         # the muscle Z95 sd of P* lower pulls; the force's own gradient there points to the
-        # most the band's ellipse holds (for a force linear in the parameters, its 97.5 %
-        # quantile exactly; near the lock the force is convex in the braid angle)
+        # most the band's ellipse holds
         start = -Z95 * covariance @ g / spread
         first, _ = solved(dict(zip(names, start, strict=True)))
         rise = np.array([(solved(dict(zip(names, start + step * np.eye(len(names))[k],
                                            strict=True)))[0] - first) / step
                          for k, step in enumerate(steps)])
         most = first.copy()
-        pressures = np.asarray(pressure_bar, dtype=float).ravel()
         for i in np.flatnonzero(near):
             reach = float(np.sqrt(max(rise[:, i] @ covariance @ rise[:, i], 0.0)))
             if np.isfinite(reach) and reach > 0:
@@ -198,7 +222,7 @@ def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
                 most[i] = np.nanmax([first[i], solved(dict(zip(names, point, strict=True)),
                                                       pressures[i:i + 1])[0][0]])
         along = np.maximum(np.nan_to_num(most - base), 0.0)
-        above = np.where(near, np.sqrt(along**2 + Z95**2 * others), below)
+        above = np.where(near, np.sqrt(along**2 + Z95**2 * others), above)
     return below.reshape(shape), above.reshape(shape)
 
 
