@@ -2998,16 +2998,22 @@ def test_the_design_pages_identified_band_against_its_draws_is_its_measured_file
     some_slack = [r for r in pulling if r["slack_draws"]]
     low = min(r["low_N"] / r["band95_N"] for r in some_slack)
     assert (f"in {within} of {len(pulling)} cases recorded where the muscle pulls, the band's "
-            f"at most {worst:.2f} of that error above the draws' ({again})") in text
+            f"at most {worst:.2f} of that error above the draws'"
+            + (f" ({again})" if again else "")) in text
     assert (f"up to {max(r['slack_draws'] for r in pulling)} of 200 draws slack), no draw "
             f"pulls less than nothing: the draws' 2.5 % quantile lies {low:.2f} of the band "
             "below the force") in text
     covers = [row.get("again", row)["above_covers"] for row in rows]
-    short = [row["case"] for row in rows
-             if row["band95_N"] < row.get("again", row)["high_range_N"][0]]
+    short = sorted(row["case"] for row in rows
+                   if row["band95_N"] < row.get("again", row)["high_range_N"][0])
     assert (f"it reaches it in {sum(covers)} of {len(rows)} cases, where the linearised "
             f"half-width fell short of it in {len(short)} (cases "
             f"{', '.join(map(str, short))})") in text
+    over = [row for row in rows if row["band95_above_N"] > row.get("again", row)["high_range_N"][1]]
+    assert (f"and lies above it in {len(over)} ("
+            + "; ".join(f"case {r['case']}, {r['band95_above_N']:.1f} N against "
+                        f"{r['high_range_N'][0]:.1f} to {r['high_range_N'][1]:.1f} N"
+                        for r in over) + ")") in text
     assert all(r["band95_N"] == 0.0 for r in slack) and len(slack) == 2
     assert ("where the muscle and its linearised band are 0 N, it states "
             f"{slack[0]['band95_above_N']:.1f} and {slack[1]['band95_above_N']:.1f} N against "
