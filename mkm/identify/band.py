@@ -98,12 +98,13 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
                     cache_dir=None):
     """The 95 % half-width [N] of each force ``force_N`` the model of ``spec`` (a
     :class:`mkm.registry.Spec`) predicted with ``calibration`` at the inputs, linearised: the
-    band's lower end (:func:`prediction_ends` gives its upper end too, which differs near the
-    threshold); None where the calibration holds no identified muscle of this model, or the
-    spec overrides the identified angle or rubber. Its solves are kept in the prediction cache
-    ``cache_dir`` (:mod:`mkm.prediction_cache`; None: no cache)."""
-    ends = prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
-                           cache_dir)
+    band's lower end (:func:`prediction_ends` gives its upper end too, which differs where the
+    force is not linear in the parameters); None where the calibration holds no identified
+    muscle of this model, or the spec overrides the identified angle or rubber. Its solves are
+    kept in the prediction cache ``cache_dir`` (:mod:`mkm.prediction_cache`; None: no
+    cache)."""
+    ends = _band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps, cache_dir,
+                 upper=False)
     return None if ends is None else ends[0]
 
 
@@ -130,6 +131,12 @@ def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
       the force is convex in the braid angle) it is taken, else the linearisation.
 
     A model that reports no threshold (``threshold_pressure_bar``) has no P* to be near."""
+    return _band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps, cache_dir,
+                 upper=True)
+
+
+def _band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps, cache_dir, upper):
+    """:func:`prediction_ends`, its upper end solved only where ``upper``."""
     found = identified_entry(calibration) if calibration is not None else None
     if found is None or "band" not in found[1]["identified"]:
         return None
@@ -182,13 +189,15 @@ def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
     shape = np.shape(force_N)
     below = Z95 * np.sqrt(linear + others)
     above = below.copy()
+    if not upper:
+        return below.reshape(shape), above.reshape(shape)
     # P*'s gradient: the same steps' thresholds (one per sweep, NaN where the braid locks)
     g = np.array([np.nanmean(t) - np.nanmean(threshold) if np.isfinite(t).any() else np.nan
                   for _, t in stepped]) / np.array(steps) if names else np.zeros(0)
     threshold_bar = float(np.nanmean(threshold)) if np.isfinite(threshold).any() else np.nan
     spread = float(np.sqrt(g @ covariance @ g)) if names and np.isfinite(g).all() else 0.0
-    near = np.asarray(pressure_bar, dtype=float).ravel() - threshold_bar < Z95 * spread
     pressures = np.asarray(pressure_bar, dtype=float).ravel()
+    near = pressures - threshold_bar < Z95 * spread
     linear_end = np.sqrt(linear)
     if names and (far := ~near & (linear_end > 0)).any():
         # the ellipse's point along each pressure's gradient, in standard deviations: pressures
