@@ -298,11 +298,11 @@ OVERFORCE_FROM_FRACTION = 0.5
 @dataclass(frozen=True)
 class ForceCeiling:
     """The most an identified muscle pulls at the run's eps: ``force_N`` [N] at each of
-    ``pressure_bar`` [bar] (its static force plus its 95 % prediction band), the least
-    ``least_N`` [N] (its static force less the band, at least 0), the braid's friction's upper
-    end ``friction_fraction`` (a falling pressure leaves that share of the static force in, a
-    rising one takes it off), and ``source``, what it was identified in (said where it trips).
-    Built by the application from a calibration of ``mkm identify``
+    ``pressure_bar`` [bar] (its static force plus its 95 % prediction band's upper end), the
+    least ``least_N`` [N] (its static force less the band's lower end, at least 0), the
+    braid's friction's upper end ``friction_fraction`` (a falling pressure leaves that share of
+    the static force in, a rising one takes it off), and ``source``, what it was identified in
+    (said where it trips). Built by the application from a calibration of ``mkm identify``
     (:func:`mkm.identify.band.force_ceiling`); the over-force interlock's bound
     (:meth:`most_N`, :meth:`mkm.bench.worker.Acquisition.overforce`)."""
 

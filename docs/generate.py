@@ -426,10 +426,11 @@ QUOTED_RUNS = {
     "identify_rest_length_shortened.json": "benchmarks/bench_identify_rest_length.py --fits "
                                            "thickwall:theta0,rubber,L0 --pairs shortened "
                                            "--out {out}",
-    "design_band_dmsp20.json": "benchmarks/bench_design_band.py --cases 0,1,2,3,4,5,6,7,8 "
-                               "--out {out}",
+    "design_band_dmsp20.json": "benchmarks/bench_design_band.py --cases "
+                               "0,1,2,3,4,5,6,7,8,18 --out {out}",
     "design_band_tight_wide.json": "benchmarks/bench_design_band.py --cases "
-                                   "9,10,11,12,13,14,15,16,17 --out {out}",
+                                   "9,10,11,12,13,14,15,16,17,19 --out {out}",
+    "overforce_band.json": "benchmarks/bench_overforce_band.py --draws 12 --out {out}",
     "surrogate_range_decline.json": "benchmarks/bench_surrogate_decline.py --seeds 20261225 "
                                     "20261228 20261701 20261702 20261703 20261704 20261705 "
                                     "--pool-with tests/surrogate/data/range_check.csv "

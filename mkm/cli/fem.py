@@ -206,16 +206,16 @@ def _solve(args) -> int:
     if args.calibration is not None:  # an identified muscle's: its 95 % band beside the force
         import dataclasses
 
-        from mkm.identify.band import prediction_band
+        from mkm.identify.band import prediction_ends
         from mkm.prediction_cache import DEFAULT_CACHE_DIR
 
-        band = prediction_band(spec_from_args(args), args.calibration, prediction.force_N,
+        ends = prediction_ends(spec_from_args(args), args.calibration, prediction.force_N,
                                args.pressures, args.D0, args.t0, args.eps,
                                cache_dir=None if args.no_cache else args.cache or
                                DEFAULT_CACHE_DIR)
-        if band is not None:
-            prediction = dataclasses.replace(prediction,
-                                             extras={"band95_N": band, **prediction.extras})
+        if ends is not None:  # the upper end differs near the threshold
+            prediction = dataclasses.replace(prediction, extras={
+                "band95_N": ends[0], "band95_above_N": ends[1], **prediction.extras})
     if model.name == "auto":
         from mkm.auto import explain
         from mkm.verdict import model_label
@@ -263,7 +263,7 @@ def _answered(prediction, model):
                                                            strict=True)],
                             reason.shape).astype(object)
     extras = {**prediction.extras, "reason": reason}
-    for name in ("force_std_N", "band95_N"):
+    for name in ("force_std_N", "band95_N", "band95_above_N"):
         if name in extras:
             extras[name] = np.where(unanswered, np.nan, extras[name])
     return dataclasses.replace(prediction, extras=extras,

@@ -72,20 +72,37 @@ def identified_band_N(row, requirements, calibration: Calibration | None,
     design's geometry, its solves kept in the prediction cache ``cache_dir``); None where the
     calibration holds no identified FE muscle, or the design takes another braid angle or
     rubber than the identified one, or a gap."""
-    from mkm.identify.band import identified_entry, prediction_band
+    from mkm.identify.band import prediction_band
+
+    return [None if band is None else float(np.ravel(band)[0]) for band in _identified(
+        prediction_band, row, requirements, calibration, gap_mm, cache_dir)]
+
+
+def identified_ends_N(row, requirements, calibration: Calibration | None,
+                      gap_mm: float = 0.0, cache_dir=None) -> list[tuple[float, float] | None]:
+    """Per requirement, how far [N] the band of :func:`identified_band_N` reaches below and
+    above design ``row``'s FE force (:func:`mkm.identify.band.prediction_ends`: above it,
+    farther where the force is not linear in the parameters); None where that gives None."""
+    from mkm.identify.band import prediction_ends
+
+    return [None if ends is None else (float(np.ravel(ends[0])[0]), float(np.ravel(ends[1])[0]))
+            for ends in _identified(prediction_ends, row, requirements, calibration, gap_mm,
+                                    cache_dir)]
+
+
+def _identified(function, row, requirements, calibration, gap_mm, cache_dir) -> list:
+    """``function`` (a band of :mod:`mkm.identify.band`) of design ``row``'s FE force at each
+    requirement; None where the design is not the identified FE muscle."""
+    from mkm.identify.band import identified_entry
 
     found = identified_entry(calibration) if calibration is not None else None
     if (found is None or found[0] != "axisym" or gap_mm or row["rubber"] != CALIBRATED_RUBBER
             or not np.isclose(float(row["theta0_deg"]), float(found[1]["theta0_deg"]))):
         return [None] * len(requirements)
     spec = parse_spec(f"axisym:mesh={row['fe_mesh']}").with_params(L0_mm=float(row["L0_mm"]))
-    out: list[float | None] = []
-    for k, r in enumerate(requirements, start=1):
-        band = prediction_band(spec, calibration, np.array([float(row[f"r{k}_fe_N"])]),
-                               np.array([r.pressure_bar]), float(row["D0_mm"]),
-                               float(row["t0_mm"]), r.eps, cache_dir)
-        out.append(None if band is None else float(np.ravel(band)[0]))
-    return out
+    return [function(spec, calibration, np.array([float(row[f"r{k}_fe_N"])]),
+                     np.array([r.pressure_bar]), float(row["D0_mm"]), float(row["t0_mm"]),
+                     r.eps, cache_dir) for k, r in enumerate(requirements, start=1)]
 
 
 def verify(designs: pd.DataFrame, requirements, mesh: str = "medium",

@@ -37,6 +37,10 @@ from mkm.identify import fitting
 Z95 = 1.959964
 #: the finite-difference step, in standard deviations of the parameter
 STEP_SD = 0.1
+#: the band's upper end is the linearisation where the force on the band's ellipse, along the
+#: gradient, parts from it by at most this share of the band (:func:`prediction_ends`): a band
+#: 2 % wider than a normal one's 1.96 standard deviations holds 97.7 % of it, not 97.5 %
+LINEAR_TOLERANCE = 0.02
 #: the level of a held-out run's joint statement (:func:`check_heldout`)
 RUN_LEVEL = 0.95
 
@@ -93,10 +97,46 @@ def identified_tube(calibration) -> tuple[float, float] | None:
 def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
                     cache_dir=None):
     """The 95 % half-width [N] of each force ``force_N`` the model of ``spec`` (a
-    :class:`mkm.registry.Spec`) predicted with ``calibration`` at the inputs; None where the
-    calibration holds no identified muscle of this model, or the spec overrides the identified
-    angle or rubber. Its solves are kept in the prediction cache ``cache_dir``
-    (:mod:`mkm.prediction_cache`; None: no cache)."""
+    :class:`mkm.registry.Spec`) predicted with ``calibration`` at the inputs, linearised: the
+    band's lower end (:func:`prediction_ends` gives its upper end too, which differs where the
+    force is not linear in the parameters); None where the calibration holds no identified
+    muscle of this model, or the spec overrides the identified angle or rubber. Its solves are
+    kept in the prediction cache ``cache_dir`` (:mod:`mkm.prediction_cache`; None: no
+    cache)."""
+    ends = _band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps, cache_dir,
+                 upper=False)
+    return None if ends is None else ends[0]
+
+
+def prediction_ends(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
+                    cache_dir=None):
+    """``(below, above)``: how far [N] the 95 % band of each force ``force_N`` reaches below
+    and above it (:func:`prediction_band`'s arguments; None where it gives None).
+
+    ``below`` is the linearisation. ``above`` is the most a muscle of the parameters' 95 %
+    ellipse pulls (for a force linear in them, its 97.5 % quantile exactly), the terms, the load
+    cell and the misfit added as below:
+
+    - near the threshold pressure P*, less than :data:`Z95` standard deviations of P* (its
+      sensitivities through the covariance) above the identified P*, or below it, the force is
+      ``max(0, A (P - P*))``, not linear in the parameters: the identified muscle's own
+      sensitivities say nothing of the muscles that pull where it is slack (a linearised band
+      is 0 N below P*), and a step of a tenth of a standard deviation may cross P*. There the
+      muscle :data:`Z95` standard deviations of P* lower is solved, through the kink, and the
+      one its own gradient points to on the ellipse (one sweep and one per parameter more, and
+      one solve per such pressure);
+    - elsewhere, the force on the ellipse where the linearisation puts its most (one solve per
+      direction, pressures of about one direction sharing it): where it parts from the
+      linearised end by more than :data:`LINEAR_TOLERANCE` of the band (near the braid lock
+      the force is convex in the braid angle) it is taken, else the linearisation.
+
+    A model that reports no threshold (``threshold_pressure_bar``) has no P* to be near."""
+    return _band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps, cache_dir,
+                 upper=True)
+
+
+def _band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps, cache_dir, upper):
+    """:func:`prediction_ends`, its upper end solved only where ``upper``."""
     found = identified_entry(calibration) if calibration is not None else None
     if found is None or "band" not in found[1]["identified"]:
         return None
@@ -112,7 +152,7 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
               **dict(zip(names, band["values"], strict=True))}
     inputs = {"D0_mm": D0_mm, "t0_mm": t0_mm}
 
-    def force_at(shift: dict) -> np.ndarray:
+    def solved(shift: dict, at=pressure_bar) -> tuple[np.ndarray, np.ndarray]:
         # a term's shift names every fitted parameter; the static force takes the static ones,
         # within what a rubber and a gap can be: a shift beyond (the other braid's pull on a
         # natural rubber's small C01 share) is the refit stopped there, as the interval is
@@ -124,25 +164,75 @@ def prediction_band(spec, calibration, force_N, pressure_bar, D0_mm, t0_mm, eps,
             moved["gap_mm"] = max(moved["gap_mm"], 0.0)
         geometry = {g: (moved[g] if g in shift or g in names else inputs[g])
                     for g in fitting.GEOMETRY}
-        return _force(spec, calibration, moved, pressure_bar, geometry["D0_mm"],
-                      geometry["t0_mm"], eps, cache_dir)
+        return _solved(spec, calibration, moved, at, geometry["D0_mm"],
+                       geometry["t0_mm"], eps, cache_dir)
+
+    def force_at(shift: dict) -> np.ndarray:
+        return solved(shift)[0]
 
     # the force at the band's own (unrounded) values: the differences are taken from it
-    base = force_at({})
+    base, threshold = solved({})
     steps = [STEP_SD * np.sqrt(max(covariance[k, k], 0.0)) or 1e-6 for k in range(len(names))]
-    gradient = [(force_at({name: step}) - base) / step
-                for name, step in zip(names, steps, strict=True)]
-    G = np.array(gradient).reshape(len(names), -1)
-    variance = np.einsum("in,ij,jn->n", G, covariance, G) if names else np.zeros(base.size)
+    stepped = [solved({name: step}) for name, step in zip(names, steps, strict=True)]
+    G = np.array([(f - base) / step for (f, _), step in zip(stepped, steps, strict=True)]
+                 ).reshape(len(names), -1)
+    linear = np.einsum("in,ij,jn->n", G, covariance, G) if names else np.zeros(base.size)
     # a term is evaluated where it moves the parameters, not linearised: it may start the
     # force at a step the identified muscle is slack at (a threshold moved)
+    others = np.zeros(base.size)
     for term in band.get("terms", ()):
         moved = force_at(term["shift"]) - base
-        variance = variance + moved**2 / (3.0 if term["kind"] == "one-sided" else 1.0)
+        others = others + moved**2 / (3.0 if term["kind"] == "one-sided" else 1.0)
     tolerance = float(band.get("sensitivity_tolerance", 0.0))
-    variance = variance + (tolerance / np.sqrt(3.0) * np.ravel(force_N)) ** 2
-    variance = variance + float(band.get("misfit_rms_N", 0.0)) ** 2
-    return Z95 * np.sqrt(variance).reshape(np.shape(force_N))
+    others = others + (tolerance / np.sqrt(3.0) * np.ravel(force_N)) ** 2
+    others = others + float(band.get("misfit_rms_N", 0.0)) ** 2
+    shape = np.shape(force_N)
+    below = Z95 * np.sqrt(linear + others)
+    above = below.copy()
+    if not upper:
+        return below.reshape(shape), above.reshape(shape)
+    # P*'s gradient: the same steps' thresholds (one per sweep, NaN where the braid locks)
+    g = np.array([np.nanmean(t) - np.nanmean(threshold) if np.isfinite(t).any() else np.nan
+                  for _, t in stepped]) / np.array(steps) if names else np.zeros(0)
+    threshold_bar = float(np.nanmean(threshold)) if np.isfinite(threshold).any() else np.nan
+    spread = float(np.sqrt(g @ covariance @ g)) if names and np.isfinite(g).all() else 0.0
+    pressures = np.asarray(pressure_bar, dtype=float).ravel()
+    near = pressures - threshold_bar < Z95 * spread
+    linear_end = np.sqrt(linear)
+    if names and (far := ~near & (linear_end > 0)).any():
+        # the ellipse's point along each pressure's gradient, in standard deviations: pressures
+        # whose directions round alike share one solve, each taking its own linear part
+        sd = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+        directions = (covariance @ G / np.where(linear_end > 0, linear_end, 1.0)).T
+        rounded = np.round(directions / np.where(sd > 0, sd, 1.0) * 20) / 20
+        for key in np.unique(rounded[far], axis=0):
+            at = far & (rounded == key).all(axis=1)
+            point = Z95 * directions[at].mean(axis=0)
+            moved, _ = solved(dict(zip(names, point, strict=True)), pressures[at])
+            curvature = moved - base[at] - G[:, at].T @ point
+            end = Z95 * linear_end[at] + curvature
+            bent = np.isfinite(end) & (np.abs(curvature) > LINEAR_TOLERANCE * Z95
+                                       * linear_end[at])
+            above[at] = np.where(bent, np.sqrt(np.maximum(end, 0.0) ** 2
+                                               + Z95**2 * others[at]), above[at])
+    if spread > 0 and near.any():
+        # the muscle Z95 sd of P* lower pulls; the force's own gradient there points to the
+        # most the band's ellipse holds
+        start = -Z95 * covariance @ g / spread
+        first, _ = solved(dict(zip(names, start, strict=True)))
+        rise = np.array([(solved(dict(zip(names, start + step * np.eye(len(names))[k],
+                                           strict=True)))[0] - first) / step
+                         for k, step in enumerate(steps)])
+        most = first.copy()
+        for i in np.flatnonzero(near):
+            reach = float(np.sqrt(max(rise[:, i] @ covariance @ rise[:, i], 0.0)))
+            if np.isfinite(reach) and reach > 0:
+                point = Z95 * covariance @ rise[:, i] / reach
+                most[i] = np.nanmax([first[i], solved(dict(zip(names, point, strict=True)),
+                                                      pressures[i:i + 1])[0][0]])
+        along = np.maximum(np.nan_to_num(most - base), 0.0)
+        above = np.where(near, np.sqrt(along**2 + Z95**2 * others), above)
+    return below.reshape(shape), above.reshape(shape)
 
 
 #: the over-force interlock's ceiling is tabulated every this much [bar], up to
@@ -176,14 +266,15 @@ def config_ceiling(config, calibration_file=None):
 def force_ceiling(calibration, muscle, max_pressure_bar: float, given: str = "--calibration"):
     """The most the muscle ``calibration`` identified (the calibration.json ``mkm identify``
     writes) pulls at ``muscle``'s eps, at pressures up to :data:`CEILING_TOP` x
-    ``max_pressure_bar`` [bar]: its identified static force plus the 95 % band
-    (:func:`prediction_band`), with the upper end of its friction's interval (the bench's
+    ``max_pressure_bar`` [bar]: its identified static force plus the 95 % band's upper
+    end (:func:`prediction_ends`: near and below the threshold, that of the muscles that pull
+    where the identified one is slack), with the upper end of its friction's interval (the bench's
     :data:`mkm.bench.preflight.FRICTION_FRACTION` where identify fitted none): the
     :class:`mkm.bench.preflight.ForceCeiling` that arms ``mkm acquire``'s over-force
-    interlock, with the least it pulls (the static force less the band). ``ValueError`` in one
-    line, naming the file as ``given`` names it, for a calibration that holds no identified
-    muscle, or one identified on another tube or rest length than ``muscle`` (a
-    :class:`mkm.fem.muscle.Muscle`) declares."""
+    interlock, with the least it pulls (the static force less the band's lower end).
+    ``ValueError`` in one line, naming the file as ``given`` names it, for a calibration that
+    holds no identified muscle, or one identified on another tube or rest length than
+    ``muscle`` (a :class:`mkm.fem.muscle.Muscle`) declares."""
     from mkm.bench.preflight import FRICTION_FRACTION, ForceCeiling
     from mkm.registry import parse_spec
 
@@ -222,9 +313,9 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float, given: str = "--
     model = spec.build(calibration)
     predicted = model.predict(pressure_bar, tube[0], tube[1], muscle.eps)
     force = np.asarray(predicted.force_N, dtype=float)
-    band = prediction_band(spec, calibration, force, pressure_bar, tube[0], tube[1],
+    ends = prediction_ends(spec, calibration, force, pressure_bar, tube[0], tube[1],
                            muscle.eps)
-    if band is None:
+    if ends is None:
         raise ValueError(f"{given} {calibration.path}: no prediction band for its "
                          f"identified model {key}")
     friction = next((p["value"] if p.get("ci_high") is None else p["ci_high"]
@@ -233,9 +324,10 @@ def force_ceiling(calibration, muscle, max_pressure_bar: float, given: str = "--
                      and p.get("value") is not None), None)
     # where the model gives no valid force (past its lock) nothing bounds the force, and it
     # pulls none for sure
-    known = np.asarray(predicted.valid, dtype=bool) & np.isfinite(force + band)
-    most = np.where(known, np.maximum(force, 0.0) + band, np.inf)
-    least = np.where(known, np.maximum(force - band, 0.0), 0.0)
+    below, above = ends
+    known = np.asarray(predicted.valid, dtype=bool) & np.isfinite(force + above)
+    most = np.where(known, np.maximum(force, 0.0) + above, np.inf)
+    least = np.where(known, np.maximum(force - below, 0.0), 0.0)
     return ForceCeiling(tuple(map(float, pressure_bar)), tuple(map(float, most)),
                         tuple(map(float, least)),
                         float(FRICTION_FRACTION if friction is None else friction),
@@ -320,7 +412,9 @@ def judge_steps(error, band, noise) -> dict:
             "run_inside": bool((error <= run_reach).all())}
 
 
-def _force(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps, cache_dir=None):
+def _solved(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps, cache_dir=None):
+    """The force [N] of the model of ``spec`` at the parameters ``values``, and its threshold
+    pressure [bar] (NaN for a model that reports none)."""
     from mkm.prediction_cache import cached_predict
 
     C10, C01 = fitting.rubber(values)
@@ -328,4 +422,7 @@ def _force(spec, calibration, values, pressure_bar, D0_mm, t0_mm, eps, cache_dir
     model = spec.with_params(theta0_deg=float(values["theta0_deg"]), C10_MPa=C10,
                              C01_MPa=C01, **gap).build(calibration)
     prediction, _ = cached_predict(model, pressure_bar, D0_mm, t0_mm, eps, cache_dir=cache_dir)
-    return np.asarray(prediction.force_N, dtype=float)
+    force = np.asarray(prediction.force_N, dtype=float)
+    threshold = prediction.extras.get("threshold_pressure_bar")
+    return force, (np.full(force.shape, np.nan) if threshold is None
+                   else np.asarray(threshold, dtype=float).reshape(force.shape))

@@ -612,22 +612,23 @@ def test_a_repeated_design_solves_nothing_with_its_cache(tmp_path, monkeypatch, 
 
 def test_a_repeated_solve_with_an_identified_muscle_takes_its_band_from_the_cache(
         tmp_path, monkeypatch, mkm_run):
-    """`mkm fem solve --calibration` solved the band's three FE sweeps (the force at the
-    identified values and a step of each parameter) again on every call: they are kept in the
-    prediction cache as mkm design keeps its band's; the force asked for is solved each time."""
+    """`mkm fem solve --calibration` solved the band's FE sweeps (the force at the identified
+    values, a step of each parameter, and the band's ellipse where the linearisation puts its
+    upper end) again on every call: they are kept in the prediction cache as mkm design keeps
+    its band's; the force asked for is solved each time."""
     lab = _identified(tmp_path).path
     argv = ["fem", "solve", "--model", f"axisym:mesh={MESH}", "--calibration", str(lab),
             "--D0", "40", "--t0", "3", "--eps", "0.1", "--pressures", "2",
             "--cache", str(tmp_path / "cache")]
     solves = _counting_fe_solves(monkeypatch)
     code, first, _ = mkm_run(argv)
-    assert code == 0 and len(solves) == 1 + 3
+    assert code == 0 and len(solves) == 1 + 3 + 1
     del solves[:]
     code, again, _ = mkm_run(argv)
     assert code == 0 and len(solves) == 1 and again == first
     del solves[:]
     code, uncached, _ = mkm_run([*argv, "--no-cache"])
-    assert code == 0 and len(solves) == 1 + 3 and uncached == first
+    assert code == 0 and len(solves) == 1 + 3 + 1 and uncached == first
 
 
 def test_the_fe_search_refines_a_braid_angle_range_too():

@@ -25,7 +25,7 @@ from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import make_model
 from mkm.fem.materials import SILASTIC_S
 from mkm.identify import identify
-from mkm.identify.band import Z95, check_heldout, prediction_band
+from mkm.identify.band import Z95, check_heldout, prediction_band, prediction_ends
 from mkm.identify.fitting import Fit
 from mkm.identify.intervals import bootstrap, robust_covariance
 from mkm.identify.procedure import _identifiability, _zero_unpinned, ratio_edge_note
@@ -712,3 +712,71 @@ def test_a_rest_length_fitted_from_shortened_runs_alone_is_said_extrapolated(tmp
     with_rest = identify([rest.path, shortened[0]], params="theta0,rubber,L0",
                          model="thickwall", search="model")
     assert not any(n.startswith("no run is held") for n in with_rest.notes)
+
+
+def rubber_identified(tmp_path, scale: float, sd: float):
+    """A calibration of the thick-wall muscle at 33 deg whose rubber ``scale`` (of Silastic S)
+    is identified to ``sd`` (1 sd), with no term, load cell or misfit: its path."""
+    data = json.loads(SHIPPED.read_text(encoding="utf-8"))
+    data["thickwall"] = {**data["thickwall"], "theta0_deg": 33.0,
+                         "C10_MPa": scale * SILASTIC_S.C10_MPa,
+                         "C01_MPa": scale * SILASTIC_S.C01_MPa, "identified": {"band": {
+                             "parameters": ["rubber_scale"], "values": [scale],
+                             "covariance": [[sd**2]]}}}
+    path = tmp_path / "calibration.json"
+    path.write_text(json.dumps(data), encoding="utf-8")
+    return path
+
+
+def rubber_model(scale: float):
+    return make_model("thickwall", theta0_deg=33.0, C10_MPa=scale * SILASTIC_S.C10_MPa,
+                      C01_MPa=scale * SILASTIC_S.C01_MPa)
+
+
+def test_the_bands_upper_end_near_the_threshold_is_the_muscles_that_pull_there(tmp_path):
+    # a rubber identified to +-8 % (1 sd): its threshold pressure P* is uncertain by about as
+    # much, and max(0, A (P - P*)) is not linear in the rubber across P*. The force falls with
+    # the rubber, so the 97.5 % quantile of the force is that of the rubber 1.96 sd softer,
+    # exactly: below the identified P* the linearised band was 0 N (the identified muscle
+    # slack, its steps too) where that muscle pulls; far above P*, the band is the linear one
+    scale, sd = 1.1, 0.088
+    path = rubber_identified(tmp_path, scale, sd)
+    D0, t0, eps = 30.0, 3.0, 0.24
+    threshold = float(rubber_model(scale).predict(np.array([1.0]), D0, t0, eps)
+                      .extras["threshold_pressure_bar"][0])
+    P = np.linspace(threshold - 0.3, threshold + 1.5, 37)
+    F = rubber_model(scale).predict(P, D0, t0, eps).force_N
+    softer = rubber_model(scale - Z95 * sd).predict(P, D0, t0, eps).force_N
+    below, above = prediction_ends(parse_spec("thickwall"), Calibration.load(path), F, P, D0,
+                                   t0, eps)
+    spread = float(rubber_model(scale - sd).predict(np.array([1.0]), D0, t0, eps)
+                   .extras["threshold_pressure_bar"][0])
+    near = P - threshold < Z95 * (threshold - spread)  # about: P* is near linear in the rubber
+    assert near.sum() > 10 and (~near).sum() > 10
+    slack_but_pulls = (F == 0) & (softer > 0)
+    assert slack_but_pulls.sum() >= 3
+    np.testing.assert_allclose(above[near], (softer - F)[near], rtol=1e-3, atol=1e-6)
+    np.testing.assert_array_equal(above[~near], below[~near])
+    # far above P* the linear band is that softer muscle's too, to its curvature
+    np.testing.assert_allclose(above[-1], (softer - F)[-1], rtol=0.02)
+    assert np.all(below[slack_but_pulls] == 0.0)
+    np.testing.assert_array_equal(below, prediction_band(
+        parse_spec("thickwall"), Calibration.load(path), F, P, D0, t0, eps))
+
+
+def test_fem_solve_prints_the_bands_upper_end_beside_it(tmp_path, mkm_run):
+    # 0.1 bar below the identified threshold of eps 0.24 the muscle is slack, and its band 0 N;
+    # the rubber 1.96 sd softer pulls there, as band95_above_N says
+    scale, sd = 1.1, 0.088
+    path = rubber_identified(tmp_path, scale, sd)
+    threshold = float(rubber_model(scale).predict(np.array([1.0]), 30.0, 3.0, 0.24)
+                      .extras["threshold_pressure_bar"][0])
+    P = round(threshold - 0.1, 3)
+    code, out, _ = mkm_run(["fem", "solve", "--model", "thickwall", "--calibration", str(path),
+                            "--D0", "30", "--t0", "3", "--eps", "0.24", "--pressures", f"{P}"])
+    assert code == 0
+    row = dict(zip(*(line.split(",") for line in out.strip().splitlines()), strict=True))
+    softer = rubber_model(scale - Z95 * sd).predict(np.array([P]), 30.0, 3.0, 0.24).force_N[0]
+    assert softer > 5.0
+    assert (float(row["force_N"]), float(row["band95_N"])) == (0.0, 0.0)
+    assert float(row["band95_above_N"]) == pytest.approx(softer, abs=0.01)

@@ -396,3 +396,34 @@ def test_check_says_each_steps_ceiling_and_refuses_a_plan_that_must_trip(calibra
     run = load_run(Path(out.splitlines()[-1]))
     assert (code, run.status) == (0, "complete"), run.reason
     assert run.samples["force_N"].max() < 810.0
+
+
+def test_the_ceiling_below_the_identified_threshold_holds_the_muscles_that_pull_there(
+        tmp_path):
+    # a rubber identified to +-5 % (1 sd), no term: at eps 0.24 the identified muscle is slack
+    # up to 1.75 bar, where a muscle of the interval 1.96 sd softer pulls already; the ceiling
+    # took the linearised band, 0 N at every slack step (its steps stiffer, slack too), and a
+    # sound muscle pulling a few newtons there read more than it
+    rubber = json.loads(json.dumps(CALIBRATION))
+    entry = rubber["thickwall"]
+    sd = 0.05 * 1.09997
+    entry["identified"]["band"] = {"parameters": ["rubber_scale"], "values": [1.09997],
+                                   "covariance": [[sd**2]]}
+    path = tmp_path / "calibration.json"
+    path.write_text(json.dumps(rubber), encoding="utf-8")
+    config = sim_config(0.24)
+    ceiling = force_ceiling(Calibration.load(path), config.muscle, 2.5)
+    from mkm.fem.ladder import make_model
+
+    def force(scale):
+        return make_model("thickwall", theta0_deg=33.0003, L0_mm=282.0,
+                          C10_MPa=scale * SILASTIC_S.C10_MPa,
+                          C01_MPa=scale * SILASTIC_S.C01_MPa).predict(
+            np.array(ceiling.pressure_bar), 30.0, 3.0, 0.24)
+
+    identified, softer = force(1.09997), force(1.09997 - 1.959964 * sd)
+    slack = (identified.force_N == 0) & (softer.force_N > 0)
+    assert slack.sum() >= 2, softer.force_N[identified.force_N == 0]
+    np.testing.assert_allclose(np.array(ceiling.force_N)[slack], softer.force_N[slack],
+                               rtol=1e-3)
+    assert np.all(np.array(ceiling.least_N)[slack] == 0.0)
