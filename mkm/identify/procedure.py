@@ -1428,8 +1428,10 @@ def profile_at_bounds(source, runs, best, boot, again, notify=None) -> dict:
     towards each bound and the others refitted on ``source`` (the fit's own model), each end
     where chi2 has risen by :data:`mkm.identify.intervals.PROFILE_RISE`, never inside the
     bootstrap's. ``boot["profiled"]``: per parameter, the bootstrap's interval before, the
-    profile's, the evaluations and refits it took; a refit that fails leaves the bootstrap's
-    interval, and says why. ``notify``: told before the refits start."""
+    profile's, the refits it took; a refit that fails leaves the bootstrap's interval, and says
+    why. ``boot["jacobian"]``: the fit's, with the profiled parameters' columns differenced
+    into the box (a parameter of a column of nothing there is identifiable where its
+    differenced column is not nothing). ``notify``: told before the refits start."""
     low_q, high_q = 100 * (1 - LEVEL) / 2, 100 * (1 + LEVEL) / 2
     flagged = [name for i, name in enumerate(best.names) if name in PROFILED and meets_bound(
         best.values[name], best.bounds[name],
@@ -1440,6 +1442,7 @@ def profile_at_bounds(source, runs, best, boot, again, notify=None) -> dict:
         notify(f"intervals: {', '.join(flagged)} at a bound of the search: profiled (refits "
                f"with {source.name})")
     interval, profiled = dict(boot["interval"]), {}
+    identifiable, jacobian = dict(boot["identifiable"]), best.jacobian.copy()
     for name in flagged:
         others = tuple(n for n in best.names if n != name)
         given = {n: best.bounds[n] for n in others}
@@ -1454,10 +1457,10 @@ def profile_at_bounds(source, runs, best, boot, again, notify=None) -> dict:
             step = inward * fitting.EDGE_FRACTION * (bounds[1] - bounds[0])
             moved = fitting.fit(source, runs, (), {**best.values, name: value + step})
             column = (moved.residual_N - best.residual_N) / step
-            jacobian = best.jacobian.copy()
-            jacobian[:, best.names.index(name)] = column
-            scale = linear_scale(dataclasses.replace(best, jacobian=jacobian),
-                                 again(dataclasses.replace(best, jacobian=jacobian)), name)
+            differenced = best.jacobian.copy()
+            differenced[:, best.names.index(name)] = column
+            moved = dataclasses.replace(best, jacobian=differenced)
+            scale = linear_scale(moved, again(moved), name)
             for k, side in enumerate(("low", "high")):
                 if fitting.at_edge(value, bounds) and (
                         abs(value - bounds[k]) <= abs(value - bounds[1 - k])):
@@ -1473,11 +1476,14 @@ def profile_at_bounds(source, runs, best, boot, again, notify=None) -> dict:
                               "refits": refits, "failed": str(exc)}
             continue
         interval[name] = tuple(ends)
+        jacobian[:, best.names.index(name)] = column
+        identifiable[name] = bool(np.any(column))
         profiled[name] = {"bootstrap_interval": list(boot["interval"][name]),
                           "interval": list(ends), "refits": refits,
                           "widened": ends != list(boot["interval"][name]),
                           "chi2_rise": PROFILE_RISE, "residual_variance": scale}
-    return {**boot, "interval": interval, "profiled": profiled}
+    return {**boot, "interval": interval, "identifiable": identifiable, "profiled": profiled,
+            "jacobian": jacobian}
 
 
 def profile_said(profiled: dict, bounds: dict) -> list[str]:
@@ -1496,11 +1502,15 @@ def profile_said(profiled: dict, bounds: dict) -> list[str]:
                          "at the bound, and says little")
             continue
         low, high = p["interval"]
-        notes.append(f"{name}'s interval ({low:.4g}-{high:.4g}) is a profile one: it meets a "
+        said = name
+        if name == "c01_fraction":  # said as the ratio the report writes
+            said, (low, high, low_b, high_b, b_low, b_high) = "C01/C10", (
+                v / (1.0 - v) for v in (low, high, low_b, high_b, b_low, b_high))
+        notes.append(f"{said}'s interval ({low:.4g}-{high:.4g}) is a profile one: it meets a "
                      f"bound of its search ({low_b:.4g} to {high_b:.4g}), where the bootstrap's "
                      f"linearised interval ({b_low:.4g}-{b_high:.4g}) says nothing; held at "
                      f"{p['refits']} values, the others refitted, chi2 rises by "
-                     f"{p['chi2_rise']:.3g} (in the bootstrap's scale) at its ends, or "
+                     f"{p['chi2_rise']:.3g} (on the bootstrap's scale) at its ends, or "
                      "reaches the bound first")
     return notes
 
@@ -1594,7 +1604,8 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
 
     (low, high), cut = ratio_interval(boot)
     static = [free.names.index(n) for n in STATIC_NAMES if n in free.names]
-    J = free.weighted_jacobian[:, static]
+    # a share at its bound: its column differenced into the box (the fit's saw nothing there)
+    J = (free.w[:, None] * boot.get("jacobian", free.jacobian))[:, static]
     norms = np.sqrt(np.sum(J**2, axis=0))
     condition = (float(np.linalg.cond((J / norms).T @ (J / norms))) if np.all(norms > 0)
                  else float("inf"))
