@@ -438,10 +438,10 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     notify("intervals: bootstrap over steps")
     shared = shared_terms(source, runs, best)
 
-    def again(fit):
+    def resample(fit):
         return bootstrap(fit, seed=seed, **instrument_terms(runs), uniform_terms=shared)
 
-    boot = profile_at_bounds(source, runs, best, again(best), again, notify)
+    boot = profile_at_bounds(source, runs, best, resample(best), resample, notify)
     rubber = {"separated": False, "why": "runs at one eps: the rubber's ratio not tested"}
     assumed, said = fitting.assumed_ratio(best.values)
     terms = None
@@ -466,7 +466,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                              "the correction taken at the first optimum did not hold at it)")
                 best, source = again, free_source
                 shared = shared_terms(source, runs, best)
-                boot = profile_at_bounds(source, runs, best, again(best), again, notify)
+                boot = profile_at_bounds(source, runs, best, resample(best), resample, notify)
                 free, free_boot, rubber, free_terms, free_source = _rubber_ratio(
                     source, fe, runs, best, seed, braid)
         notes += _outside_box(caught)
@@ -1416,14 +1416,14 @@ def ratio_edge_term(one_scale, free) -> dict:
                     "fit with the ratio at the edge of its search"}
 
 
-def profile_at_bounds(source, runs, best, boot, again, notify=None) -> dict:
+def profile_at_bounds(source, runs, best, boot, resample, notify=None) -> dict:
     """``boot`` with the interval of each static parameter that meets a bound of its search
     (:func:`mkm.identify.intervals.meets_bound`) a profile one: at a bound the bootstrap's
     replicates step from the optimum by its Jacobian there and collapse onto the bound (an
     interval of nothing: C01's share at 0 gave C01/C10 0-1.6e-06), or see a column of nothing
     (its finite difference taken beyond the bound) and call the parameter not identifiable.
     The parameter's column is differenced into the box (one evaluation) and the bootstrap run
-    again with it (``again(fit)``: the same draws) for the scale of its chi2
+    again with it (``resample(fit)``: the same draws) for the scale of its chi2
     (:func:`mkm.identify.intervals.linear_scale`); then it is held at values from its estimate
     towards each bound and the others refitted on ``source`` (the fit's own model), each end
     where chi2 has risen by :data:`mkm.identify.intervals.PROFILE_RISE`, never inside the
@@ -1460,7 +1460,7 @@ def profile_at_bounds(source, runs, best, boot, again, notify=None) -> dict:
             differenced = best.jacobian.copy()
             differenced[:, best.names.index(name)] = column
             moved = dataclasses.replace(best, jacobian=differenced)
-            scale = linear_scale(moved, again(moved), name)
+            scale = linear_scale(moved, resample(moved), name)
             for k, side in enumerate(("low", "high")):
                 if fitting.at_edge(value, bounds) and (
                         abs(value - bounds[k]) <= abs(value - bounds[1 - k])):
@@ -1577,10 +1577,10 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                             f"({source.name}'s) before the runs fixed it"}, None, source
     shared = shared_terms(source, runs, free)
 
-    def again(fit, shared=shared):
+    def resample(fit, shared=shared):
         return bootstrap(fit, seed=seed, **instrument_terms(runs), uniform_terms=shared)
 
-    boot = profile_at_bounds(source, runs, free, again(free), again)
+    boot = profile_at_bounds(source, runs, free, resample(free), resample)
     terms = model_form_terms(source, fe, runs, free, braid)
     share = free.values["c01_fraction"]
     ratio = share / (1.0 - share)
@@ -1628,7 +1628,7 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     declared = None
     if not rejected and shared and improvement > RATIO_LIKELIHOOD:
         (d_low, d_high), _ = ratio_interval(profile_at_bounds(
-            source, runs, free, again(free, None), lambda fit: again(fit, None)))
+            source, runs, free, resample(free, None), lambda fit: resample(fit, None)))
         if not d_low <= assumed <= d_high:
             declared = {"ratio_ci": [d_low, d_high], "terms": sorted(shared)}
     # a braid the model may not have bends the curve as another ratio would (measured on the
