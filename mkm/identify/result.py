@@ -358,6 +358,12 @@ class Identification:
                                           for n, t in self._geometry_tolerances().items())
                                 + "; the pressure monitor's gain uniform within its declared "
                                   "accuracy at the regulator's top pressure"
+                                + "".join(f"; {name}'s a profile where it meets a bound of its "
+                                          f"search ({p['refits']} refits, chi2 risen by "
+                                          f"{p['chi2_rise']:.3g} on the bootstrap's scale)"
+                                          for name, p in self.bootstrap.get("profiled",
+                                                                            {}).items()
+                                          if p.get("widened"))
                                 + (f"; widened x{self.goodness.birge_ratio:.3g} by the misfit"
                                    if self.goodness and self.goodness.birge_ratio > 1 else "")
                                 + "".join(f"; extended by the model-form term {name} "

@@ -1513,3 +1513,6 @@ def test_a_rubber_ratio_at_its_bound_gets_a_profile_interval(tmp_path):
             "search (0 to 9), where the bootstrap's linearised interval (0-9) says nothing; "
             f"held at {profiled['refits']} values, the others refitted, chi2 rises by 3.84 (on "
             "the bootstrap's scale) at its ends, or reaches the bound first") in result.notes
+    assert (f"; c01_fraction's a profile where it meets a bound of its search "
+            f"({profiled['refits']} refits, chi2 risen by 3.84 on the bootstrap's scale)"
+            ) in result.record()["interval_method"]
