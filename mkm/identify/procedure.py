@@ -1455,8 +1455,10 @@ def profile_at_bounds(source, runs, best, boot, resample, notify=None) -> dict:
         ends, refits = [], 0
         try:
             step = inward * fitting.EDGE_FRACTION * (bounds[1] - bounds[0])
-            moved = fitting.fit(source, runs, (), {**best.values, name: value + step})
-            column = (moved.residual_N - best.residual_N) / step
+            stepped = fitting.fit(source, runs, (), {**best.values, name: value + step})
+            column = (stepped.residual_N - best.residual_N) / step
+            if not np.any(column):  # the runs do not see it into the box either
+                continue
             differenced = best.jacobian.copy()
             differenced[:, best.names.index(name)] = column
             moved = dataclasses.replace(best, jacobian=differenced)
@@ -1477,7 +1479,7 @@ def profile_at_bounds(source, runs, best, boot, resample, notify=None) -> dict:
             continue
         interval[name] = tuple(ends)
         jacobian[:, best.names.index(name)] = column
-        identifiable[name] = bool(np.any(column))
+        identifiable[name] = True
         profiled[name] = {"bootstrap_interval": list(boot["interval"][name]),
                           "interval": list(ends), "refits": refits,
                           "widened": ends != list(boot["interval"][name]),
