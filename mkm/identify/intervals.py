@@ -228,8 +228,8 @@ PROFILED = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_
 #: each end of a profile interval where chi2 (in the bootstrap's scale) has risen by this: the
 #: square of the normal's 97.5 % point, as each end of a percentile interval is
 PROFILE_RISE = 1.959964 ** 2
-#: a profile's first value held, as the fraction of the way to the bound, at the least; then
-#: doubled until chi2 rises past :data:`PROFILE_RISE`, then bisected this many times
+#: a profile's first step from the estimate, as the fraction of the way to the bound, at the
+#: least; doubled until chi2 rises past :data:`PROFILE_RISE`, then bisected this many times
 PROFILE_FIRST, PROFILE_BISECTIONS = 2.0 ** -6, 5
 
 
@@ -267,17 +267,17 @@ def profile(refit, result: Fit, name: str, side: str, scale: float,
     the sum of squares has risen by :data:`PROFILE_RISE` times ``scale``
     (:func:`linear_scale`), or the bound where it does not rise so far; never inside the
     bootstrap's end ``linear_end``, which carries the instrument's tolerances as well. The
-    first value held is that end (or :data:`PROFILE_FIRST` of the way to the bound, if
-    nearer): where chi2 has risen so far there the bootstrap's end stands, one refit.
+    first value held is that end (:data:`PROFILE_FIRST` of the way to the bound where it is
+    the estimate): where chi2 has risen so far there the bootstrap's end stands, one refit;
+    else the distance doubles (from that first fraction at the least) until it has.
     Returns the end and the number of refits."""
     x0 = result.values[name]
     bound = result.bounds[name][0 if side == "low" else 1]
     reach = PROFILE_RISE * scale
     refits, start = 0, result.values
-    inside, beyond = (min(max((linear_end - x0) / (bound - x0), 0.0), 1.0)
-                      if bound != x0 else 1.0), None  # fractions of the way to the bound
-    fraction = max(inside, PROFILE_FIRST)
-    inside = 0.0
+    # fractions of the way to the bound
+    linear = min(max((linear_end - x0) / (bound - x0), 0.0), 1.0) if bound != x0 else 1.0
+    inside, beyond, fraction = 0.0, None, linear if linear > 0 else PROFILE_FIRST
     while beyond is None:
         fitted = refit(x0 + fraction * (bound - x0), start)
         refits += 1
@@ -286,8 +286,9 @@ def profile(refit, result: Fit, name: str, side: str, scale: float,
         elif fraction >= 1.0:
             return bound, refits
         else:
-            inside, start, fraction = fraction, fitted.values, min(2.0 * fraction, 1.0)
-    if refits == 1 and beyond > PROFILE_FIRST:  # risen by the bootstrap's end: it stands
+            inside, start = fraction, fitted.values
+            fraction = min(max(2.0 * fraction, PROFILE_FIRST), 1.0)
+    if beyond <= linear:  # risen by the bootstrap's end: it stands
         return linear_end, refits
     for _ in range(PROFILE_BISECTIONS):
         middle = (inside + beyond) / 2
@@ -297,4 +298,4 @@ def profile(refit, result: Fit, name: str, side: str, scale: float,
             beyond = middle
         else:
             inside, start = middle, fitted.values
-    return x0 + (inside + beyond) / 2 * (bound - x0), refits
+    return x0 + max((inside + beyond) / 2, linear) * (bound - x0), refits

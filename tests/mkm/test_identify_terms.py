@@ -1443,6 +1443,10 @@ def test_a_profile_at_a_bound_ends_where_chi2_has_risen_by_the_intervals_level()
     assert end == pytest.approx(a_hat + np.sqrt(a_hat**2 + PROFILE_RISE * scale / sxx),
                                 rel=1 / 64)
     assert refits <= 7 + 5  # doubled from a 64th of the way, then bisected five times
+    # never inside the bootstrap's end, which carries what the profile does not: a wider one
+    # stands after the one refit that finds chi2 risen past the level there
+    assert profile(lambda a, start: line_fit(x, y, a), best, "theta0_deg", "high", scale,
+                   2 * end) == (2 * end, 1)
 
 
 def test_a_profile_inside_the_bounds_gives_the_bootstraps_interval_of_a_line():
