@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from mkm.identify.fitting import Fit
+from mkm.identify.fitting import Fit, at_edge
 
 REPLICATES = 4000
 LEVEL = 0.95
@@ -219,3 +219,83 @@ def extend(boot: dict, result: Fit, terms: dict) -> dict:
         lo_b, hi_b = result.bounds[name]
         interval[name] = (max(low, lo_b), min(high, hi_b))
     return {**boot, "interval": interval, "before_model_form": boot["interval"]}
+
+
+#: the parameters whose interval is profiled where it meets a bound of their search
+#: (:func:`profile_at_bounds`): the static force's; a friction or creep term at its zero bound is
+#: no force at all, its clipped interval one-sided already, and each refit would cost a fit
+PROFILED = ("theta0_deg", "rubber_scale", "c01_fraction", "t0_mm", "D0_mm", "L0_mm", "gap_mm")
+#: each end of a profile interval where chi2 (in the bootstrap's scale) has risen by this: the
+#: square of the normal's 97.5 % point, as each end of a percentile interval is
+PROFILE_RISE = 1.959964 ** 2
+#: a profile's first step from the estimate, as the fraction of the way to the bound, at the
+#: least; doubled until chi2 rises past :data:`PROFILE_RISE`, then bisected this many times
+PROFILE_FIRST, PROFILE_BISECTIONS = 2.0 ** -6, 5
+
+
+def meets_bound(value: float, bounds: tuple[float, float],
+                linear: tuple[float, float]) -> bool:
+    """Whether a parameter ``value`` rests on a bound of its search (within
+    :data:`mkm.identify.fitting.EDGE_FRACTION` of its width) or its linearised 95 % interval
+    ``linear`` (unclipped) reaches one."""
+    return at_edge(value, bounds) or linear[0] <= bounds[0] or linear[1] >= bounds[1]
+
+
+def linear_scale(result: Fit, boot: dict, name: str) -> float:
+    """The residuals' variance in which ``boot``'s linearised spread of ``name`` is a chi2 rise
+    of :data:`PROFILE_RISE` at each end: its replicates' variance (the 95 % range over
+    2 x 1.96, unclipped) over its diagonal element of ``(J'J)^-1``. A profile on that scale
+    gives the bootstrap's interval where the model is linear in the parameter, and carries
+    what the bootstrap draws besides the steps' noise (the hold samples' shared errors, the
+    instrument's tolerances: the declared wall alone makes theta0's variance 5e5 times the
+    samples' scatter's); at a bound it follows chi2 where the linearisation collapses."""
+    names = result.names
+    use = [i for i, n in enumerate(names) if boot["identifiable"][n]]
+    J = result.weighted_jacobian[:, use]
+    k = use.index(names.index(name))
+    low, high = np.percentile(boot["draws"][:, names.index(name)],
+                              [100 * (1 - LEVEL) / 2, 100 * (1 + LEVEL) / 2])
+    sd = (high - low) / (2 * 1.959964)
+    return float(sd**2 / np.linalg.pinv(J.T @ J)[k, k])
+
+
+def profile(refit, result: Fit, name: str, side: str, scale: float,
+            linear_end: float) -> tuple[float, int]:
+    """The end of ``name``'s interval towards its ``side`` bound, profiled: ``name`` held at
+    values from its estimate towards that bound, the others refitted (``refit(value, start)``:
+    the fit with ``name`` held at ``value``, started from the values ``start``), the end where
+    the sum of squares has risen by :data:`PROFILE_RISE` times ``scale``
+    (:func:`linear_scale`), or the bound where it does not rise so far; never inside the
+    bootstrap's end ``linear_end``, which carries the instrument's tolerances as well. The
+    first value held is that end (:data:`PROFILE_FIRST` of the way to the bound where it is
+    the estimate): where chi2 has risen so far there the bootstrap's end stands, one refit;
+    else the distance doubles (from that first fraction at the least) until it has.
+    Returns the end and the number of refits."""
+    x0 = result.values[name]
+    bound = result.bounds[name][0 if side == "low" else 1]
+    reach = PROFILE_RISE * scale
+    refits, start = 0, result.values
+    # fractions of the way to the bound
+    linear = min(max((linear_end - x0) / (bound - x0), 0.0), 1.0) if bound != x0 else 1.0
+    inside, beyond, fraction = 0.0, None, linear if linear > 0 else PROFILE_FIRST
+    while beyond is None:
+        fitted = refit(x0 + fraction * (bound - x0), start)
+        refits += 1
+        if fitted.rss - result.rss >= reach:
+            beyond = fraction
+        elif fraction >= 1.0:
+            return bound, refits
+        else:
+            inside, start = fraction, fitted.values
+            fraction = min(max(2.0 * fraction, PROFILE_FIRST), 1.0)
+    if beyond <= linear:  # risen by the bootstrap's end: it stands
+        return linear_end, refits
+    for _ in range(PROFILE_BISECTIONS):
+        middle = (inside + beyond) / 2
+        fitted = refit(x0 + middle * (bound - x0), start)
+        refits += 1
+        if fitted.rss - result.rss >= reach:
+            beyond = middle
+        else:
+            inside, start = middle, fitted.values
+    return x0 + max((inside + beyond) / 2, linear) * (bound - x0), refits

@@ -49,8 +49,23 @@ from mkm.fem.paper import equation7_err_pct
 from mkm.identify import fitting, goodness
 from mkm.identify.fitting import GROUPS, STATIC_NAMES, Corrected, ModelStatic, SurrogateStatic
 from mkm.identify.groups import DEFAULT_GROUPS, SEARCHES
-from mkm.identify.intervals import CONFOUNDED, bootstrap, extend
-from mkm.identify.result import ONE_EPS_NOTE, REST_EXTRAPOLATED_NOTE, Identification
+from mkm.identify.intervals import (
+    CONFOUNDED,
+    LEVEL,
+    PROFILE_RISE,
+    PROFILED,
+    bootstrap,
+    extend,
+    linear_scale,
+    meets_bound,
+    profile,
+)
+from mkm.identify.result import (
+    ONE_EPS_NOTE,
+    REST_EXTRAPOLATED_NOTE,
+    Identification,
+    ratio_profile_said,
+)
 from mkm.identify.runs import (
     load_runs,
     offset_bound_said,
@@ -426,8 +441,12 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         confirmation["note"] = "searched with the FE model itself"
 
     notify("intervals: bootstrap over steps")
-    boot = bootstrap(best, seed=seed, **instrument_terms(runs),
-                     uniform_terms=shared_terms(source, runs, best))
+    shared = shared_terms(source, runs, best)
+
+    def resample(fit):
+        return bootstrap(fit, seed=seed, **instrument_terms(runs), uniform_terms=shared)
+
+    boot = profile_at_bounds(source, runs, best, resample(best), resample, notify)
     rubber = {"separated": False, "why": "runs at one eps: the rubber's ratio not tested"}
     assumed, said = fitting.assumed_ratio(best.values)
     terms = None
@@ -451,8 +470,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                              "training the surrogate's error changes fast with the parameters: "
                              "the correction taken at the first optimum did not hold at it)")
                 best, source = again, free_source
-                boot = bootstrap(best, seed=seed, **instrument_terms(runs),
-                                 uniform_terms=shared_terms(source, runs, best))
+                shared = shared_terms(source, runs, best)
+                boot = profile_at_bounds(source, runs, best, resample(best), resample, notify)
                 free, free_boot, rubber, free_terms, free_source = _rubber_ratio(
                     source, fe, runs, best, seed, braid)
         notes += _outside_box(caught)
@@ -488,7 +507,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         elif rubber.get("rejects_silastic_ratio") and rubber.get("braid_in_doubt"):
             low, high = rubber["ratio_ci"]
             notes.append(f"the runs reject {said} C01/C10 (95 % interval {low:.3g}-"
-                         f"{high:.3g}{_box_cut(rubber)}), but a braid other than {fe.name}'s "
+                         f"{high:.3g}{ratio_profile_said(rubber)}{_box_cut(rubber)}), but a "
+                         f"braid other than {fe.name}'s "
                          f"bends the curve the same way: one rubber scale kept at {said} "
                          "ratio, its interval holding the other braid's; give --braid if the "
                          "braid is known, and "
@@ -499,7 +519,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                     f", yet freeing it lowers chi2 by only {rubber['chi2_improvement']:.2g}, "
                     f"under {RATIO_LIKELIHOOD:.2f}: the fits do not reject {said}")
             notes.append(f"C10 and C01 not separated by these runs (C01/C10 95 % interval "
-                         f"{low:.3g}-{high:.3g}{flat}{_box_cut(rubber)}): one rubber scale at "
+                         f"{low:.3g}-{high:.3g}{flat}{ratio_profile_said(rubber)}"
+                         f"{_box_cut(rubber)}): one rubber scale at "
                          f"{said} ratio {assumed:.3g} assumed; the C10 and "
                          "C01 written are that assumption's (the stiffness the runs fix, "
                          f"not two measured constants){_declared_holds_ratio(rubber)}")
@@ -579,6 +600,7 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
     fitness.pulls_late = bool(late)
     notes += late
     notes += _identifiability(runs, best, boot)
+    notes += profile_said(boot.get("profiled", {}), best.bounds)
     if boot.get("stretched"):
         notes.append(f"{', '.join(boot['stretched'])}: the bootstrap's 95 % range left the "
                      "estimate out (its replicates step as if a parameter resting on a bound "
@@ -1484,6 +1506,107 @@ def ratio_edge_term(one_scale, free) -> dict:
                     "fit with the ratio at the edge of its search"}
 
 
+def profile_at_bounds(source, runs, best, boot, resample, notify=None) -> dict:
+    """``boot`` with the interval of each static parameter that meets a bound of its search
+    (:func:`mkm.identify.intervals.meets_bound`) a profile one: at a bound the bootstrap's
+    replicates step from the optimum by its Jacobian there and collapse onto the bound (an
+    interval of nothing: C01's share at 0 gave C01/C10 0-1.6e-06), or see a column of nothing
+    (its finite difference taken beyond the bound) and call the parameter not identifiable.
+    The parameter's column is differenced into the box (one evaluation) and the bootstrap run
+    again with it (``resample(fit)``: the same draws) for the scale of its chi2
+    (:func:`mkm.identify.intervals.linear_scale`); then it is held at values from its estimate
+    towards each bound and the others refitted on ``source`` (the fit's own model), each end
+    where chi2 has risen by :data:`mkm.identify.intervals.PROFILE_RISE`, never inside the
+    bootstrap's. ``boot["profiled"]``: per parameter, the bootstrap's interval before, the
+    profile's, the refits it took; a refit that fails leaves the bootstrap's interval, and says
+    why. ``boot["jacobian"]``: the fit's, with the profiled parameters' columns differenced
+    into the box (a parameter of a column of nothing there is identifiable where its
+    differenced column is not nothing). ``notify``: told before the refits start."""
+    low_q, high_q = 100 * (1 - LEVEL) / 2, 100 * (1 + LEVEL) / 2
+    flagged = [name for i, name in enumerate(best.names) if name in PROFILED and meets_bound(
+        best.values[name], best.bounds[name],
+        tuple(np.percentile(boot["draws"][:, i], [low_q, high_q])))]
+    if not flagged:
+        return boot
+    if notify:
+        notify(f"intervals: {', '.join(flagged)} at a bound of the search: profiled (refits "
+               f"with {source.name})")
+    interval, profiled = dict(boot["interval"]), {}
+    identifiable, jacobian = dict(boot["identifiable"]), best.jacobian.copy()
+    for name in flagged:
+        others = tuple(n for n in best.names if n != name)
+        given = {n: best.bounds[n] for n in others}
+
+        def refit(value, start, name=name, others=others, given=given):
+            return fitting.fit(source, runs, others, {**start, name: value}, given=given)
+
+        value, bounds = best.values[name], best.bounds[name]
+        inward = 1 if value - bounds[0] <= bounds[1] - value else -1
+        ends, refits = [], 0
+        try:
+            step = inward * fitting.EDGE_FRACTION * (bounds[1] - bounds[0])
+            stepped = fitting.fit(source, runs, (), {**best.values, name: value + step})
+            column = (stepped.residual_N - best.residual_N) / step
+            if not np.any(column):  # the runs do not see it into the box either
+                continue
+            differenced = best.jacobian.copy()
+            differenced[:, best.names.index(name)] = column
+            moved = dataclasses.replace(best, jacobian=differenced)
+            scale = linear_scale(moved, resample(moved), name)
+            for k, side in enumerate(("low", "high")):
+                if fitting.at_edge(value, bounds) and (
+                        abs(value - bounds[k]) <= abs(value - bounds[1 - k])):
+                    ends.append(bounds[k])  # resting on it: that end is the bound
+                    continue
+                # the bootstrap's end is kept where wider; not one of a column of nothing
+                linear = boot["interval"][name][k] if boot["identifiable"][name] else value
+                end, n = profile(refit, best, name, side, scale, linear)
+                ends.append(end)
+                refits += n
+        except RuntimeError as exc:
+            profiled[name] = {"bootstrap_interval": list(boot["interval"][name]),
+                              "refits": refits, "failed": str(exc)}
+            continue
+        interval[name] = tuple(ends)
+        jacobian[:, best.names.index(name)] = column
+        identifiable[name] = True
+        profiled[name] = {"bootstrap_interval": list(boot["interval"][name]),
+                          "interval": list(ends), "refits": refits,
+                          "widened": ends != list(boot["interval"][name]),
+                          "chi2_rise": PROFILE_RISE, "residual_variance": scale}
+    return {**boot, "interval": interval, "identifiable": identifiable, "profiled": profiled,
+            "jacobian": jacobian}
+
+
+def profile_said(profiled: dict, bounds: dict) -> list[str]:
+    """A note per parameter whose interval :func:`profile_at_bounds` widened, or whose profile
+    failed."""
+    notes = []
+    for name, p in profiled.items():
+        if not (p.get("widened") or "failed" in p):
+            continue  # the bootstrap's interval stood: nothing to say
+        low_b, high_b = bounds[name]
+        b_low, b_high = p["bootstrap_interval"]
+        if "failed" in p:
+            notes.append(f"{name} meets a bound of its search ({low_b:.4g} to {high_b:.4g}) and "
+                         f"its profile failed after {p['refits']} refits ({p['failed']}): its "
+                         f"interval ({b_low:.4g}-{b_high:.4g}) is the bootstrap's, linearised "
+                         "at the bound, and says little")
+            continue
+        low, high = p["interval"]
+        said = name
+        if name == "c01_fraction":  # said as the ratio the report writes
+            said, (low, high, low_b, high_b, b_low, b_high) = "C01/C10", (
+                v / (1.0 - v) for v in (low, high, low_b, high_b, b_low, b_high))
+        notes.append(f"{said}'s interval ({low:.4g}-{high:.4g}) is a profile one: it meets a "
+                     f"bound of its search ({low_b:.4g} to {high_b:.4g}), where the bootstrap's "
+                     f"linearised interval ({b_low:.4g}-{b_high:.4g}) says nothing; held at "
+                     f"{p['refits']} values, the others refitted, chi2 rises by "
+                     f"{p['chi2_rise']:.3g} (on the bootstrap's scale) at its ends, or "
+                     "reaches the bound first")
+    return notes
+
+
 def _improvement(one_scale, free) -> float:
     """The likelihood ratio of the fit with C01's share free (``free``) over the fit at one
     ratio (``one_scale``), in units of the free fit's residual variance."""
@@ -1545,7 +1668,11 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
                             "why": "C01's share reached the search box "
                             f"({source.name}'s) before the runs fixed it"}, None, source
     shared = shared_terms(source, runs, free)
-    boot = bootstrap(free, seed=seed, **instrument_terms(runs), uniform_terms=shared)
+
+    def resample(fit, shared=shared):
+        return bootstrap(fit, seed=seed, **instrument_terms(runs), uniform_terms=shared)
+
+    boot = profile_at_bounds(source, runs, free, resample(free), resample)
     terms = model_form_terms(source, fe, runs, free, braid)
     share = free.values["c01_fraction"]
     ratio = share / (1.0 - share)
@@ -1569,7 +1696,8 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
 
     (low, high), cut = ratio_interval(boot)
     static = [free.names.index(n) for n in STATIC_NAMES if n in free.names]
-    J = free.weighted_jacobian[:, static]
+    # a share at its bound: its column differenced into the box (the fit's saw nothing there)
+    J = (free.w[:, None] * boot.get("jacobian", free.jacobian))[:, static]
     norms = np.sqrt(np.sum(J**2, axis=0))
     condition = (float(np.linalg.cond((J / norms).T @ (J / norms))) if np.all(norms > 0)
                  else float("inf"))
@@ -1591,8 +1719,8 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     # the fits prefer, the runs want another rubber and the tolerances keep it unmeasured
     declared = None
     if not rejected and shared and improvement > RATIO_LIKELIHOOD:
-        (d_low, d_high), _ = ratio_interval(bootstrap(free, seed=seed,
-                                                      **instrument_terms(runs)))
+        (d_low, d_high), _ = ratio_interval(profile_at_bounds(
+            source, runs, free, resample(free, None), lambda fit: resample(fit, None)))
         if not d_low <= assumed <= d_high:
             declared = {"ratio_ci": [d_low, d_high], "terms": sorted(shared)}
     # a braid the model may not have bends the curve as another ratio would (measured on the
@@ -1610,6 +1738,7 @@ def _rubber_ratio(source, fe, runs, best, seed, braid):
     return free, boot, {"separated": separated, "ratio_C01_over_C10": ratio,
                         "ratio_ci": [low, high], "condition": condition,
                         "ratio_box_cut": [v / (1.0 - v) for v in cut],
+                        "ratio_profile": boot.get("profiled", {}).get("c01_fraction"),
                         "searched_with": getattr(source, "base", source).name,
                         "rejects_silastic_ratio": rejected, "braid_in_doubt": braid_doubt,
                         "chi2_improvement": float(improvement),

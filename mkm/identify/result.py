@@ -187,7 +187,8 @@ class Identification:
                 why = (f"{said} ratio: the runs do not separate C10 and C01"
                        + (f" (C01/C10 95 % interval {self.rubber['ratio_ci'][0]:.3g}-"
                           f"{self.rubber['ratio_ci'][1]:.3g}, condition number "
-                          f"{self.rubber['condition']:.2g}" + _box_cut(self.rubber) + ")"
+                          f"{self.rubber['condition']:.2g}" + ratio_profile_said(self.rubber)
+                          + _box_cut(self.rubber) + ")"
                           if "ratio_ci" in self.rubber else ""))
                 add("C01_over_C10", ratio, status="assumed", source=why)
                 for key in ("C10_MPa", "C01_MPa"):
@@ -359,6 +360,12 @@ class Identification:
                                           for n, t in self._geometry_tolerances().items())
                                 + "; the pressure monitor's gain uniform within its declared "
                                   "accuracy at the regulator's top pressure"
+                                + "".join(f"; {name}'s a profile where it meets a bound of its "
+                                          f"search ({p['refits']} refits, chi2 risen by "
+                                          f"{p['chi2_rise']:.3g} on the bootstrap's scale)"
+                                          for name, p in self.bootstrap.get("profiled",
+                                                                            {}).items()
+                                          if p.get("widened"))
                                 + (f"; widened x{self.goodness.birge_ratio:.3g} by the misfit"
                                    if self.goodness and self.goodness.birge_ratio > 1 else "")
                                 + "".join(f"; extended by the model-form term {name} "
@@ -615,6 +622,17 @@ def _branches(rising_pct: float, falling_pct: float) -> str:
     shown = [f"{v:.2f}" if np.isfinite(v) else f"none ({name} step)"
              for v, name in ((rising_pct, "no rising"), (falling_pct, "no falling"))]
     return "/".join(shown)
+
+
+def ratio_profile_said(rubber: dict) -> str:
+    """Where C01's share met a bound of its search and its interval is a profile one
+    (:func:`mkm.identify.procedure.profile_at_bounds`) wider than the bootstrap's, or ''."""
+    profiled = rubber.get("ratio_profile")
+    if not profiled or not profiled.get("widened"):
+        return ""
+    return (f"; a profile interval: C01's share meets a bound of its search, where the "
+            f"bootstrap's collapses, so it was held at {profiled['refits']} values, the rest "
+            "refitted")
 
 
 def _box_cut(rubber: dict) -> str:

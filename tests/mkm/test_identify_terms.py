@@ -1472,3 +1472,114 @@ def test_the_search_model_note_gives_the_command_to_type():
         "0.184-0.248, linearised; Silastic S's 0.905); to test it, identify again with the FE "
         "model searching (one sweep per run and evaluation): mkm identify 'runs/latex eps0' "
         "runs/b --params theta0,rubber,friction,creep,offset --model axisym --search model")
+
+
+def line_fit(x, y, slope: float, slope_bounds=(0.0, 1.0)) -> Fit:
+    """``F = a x + b`` at the slope ``a`` with ``b`` refitted (the least-squares line of that
+    slope), one sample per step, one run."""
+    b = float(np.mean(y - slope * x))
+    return Fit(("theta0_deg", "rubber_scale"), {"theta0_deg": slope, "rubber_scale": b},
+               slope * x + b - y, y, np.c_[x, np.ones_like(x)], np.arange(x.size),
+               np.zeros(x.size, dtype=int), {"theta0_deg": slope_bounds,
+                                             "rubber_scale": (-10.0, 10.0)},
+               "test", 1, "", [], np.zeros(1))
+
+
+def test_a_profile_at_a_bound_ends_where_chi2_has_risen_by_the_intervals_level():
+    """A line whose data want a slope of -0.1, searched from 0: the fit rests on the bound and
+    the bootstrap's replicates, stepping from it as if it were free, all land below it and
+    collapse onto it. The profile ends where the sum of squares has risen by 3.84 times the
+    scale: for a line, rss(a) - rss(0) = Sxx (a^2 - 2 a a_hat) (a_hat the free slope), so at
+    a_hat + sqrt(a_hat^2 + 3.84 scale / Sxx); bisected to a 64th of its bracket."""
+    from mkm.identify.intervals import PROFILE_RISE, profile
+
+    x = np.linspace(1.0, 2.0, 40)
+    y = 1.0 - 0.1 * x + 0.01 * np.random.default_rng(3).standard_normal(x.size)
+    best = line_fit(x, y, 0.0)
+    assert bootstrap(best)["interval"]["theta0_deg"][1] < 1e-3  # collapsed
+    scale = 4e-4
+    end, refits = profile(lambda a, start: line_fit(x, y, a), best, "theta0_deg", "high",
+                          scale, 0.0)
+    sxx = float(np.sum((x - x.mean()) ** 2))
+    a_hat = float(np.sum((x - x.mean()) * (y - y.mean())) / sxx)
+    assert a_hat < -0.05
+    assert end == pytest.approx(a_hat + np.sqrt(a_hat**2 + PROFILE_RISE * scale / sxx),
+                                rel=1 / 64)
+    assert refits <= 7 + 5  # doubled from a 64th of the way, then bisected five times
+    # never inside the bootstrap's end, which carries what the profile does not: a wider one
+    # stands after the one refit that finds chi2 risen past the level there
+    assert profile(lambda a, start: line_fit(x, y, a), best, "theta0_deg", "high", scale,
+                   2 * end) == (2 * end, 1)
+
+
+def test_a_profile_inside_the_bounds_gives_the_bootstraps_interval_of_a_line():
+    """On the scale :func:`linear_scale` takes from the bootstrap, the profile of a parameter
+    free inside its bounds ends where the bootstrap's 95 % interval does (a model linear in it:
+    within the percentiles' scatter over 4000 replicates, a few %)."""
+    from mkm.identify.intervals import linear_scale, profile
+
+    x = np.linspace(1.0, 2.0, 40)
+    y = 1.0 + 0.3 * x + 0.01 * np.random.default_rng(4).standard_normal(x.size)
+    sxx = float(np.sum((x - x.mean()) ** 2))
+    a_hat = float(np.sum((x - x.mean()) * (y - y.mean())) / sxx)
+    best = line_fit(x, y, a_hat)
+    boot = bootstrap(best, sensitivity_tolerance=0.0)
+    scale = linear_scale(best, boot, "theta0_deg")
+    low, high = boot["interval"]["theta0_deg"]
+    for side, linear in (("low", low), ("high", high)):
+        end, _ = profile(lambda a, start: line_fit(x, y, a), best, "theta0_deg", side, scale,
+                         a_hat)  # the bootstrap's end not kept: the profile's alone
+        assert end - a_hat == pytest.approx(linear - a_hat, rel=0.05)
+
+
+def test_a_rubber_ratio_at_its_bound_gets_a_profile_interval(tmp_path):
+    """A natural rubber (C01/C10 0.1) on a load cell reading 2 % high, on the thick-wall bench:
+    the fit with the ratio free puts C01's share at 0, its bound, where the fit's Jacobian has
+    a column of nothing (its finite difference taken beyond the bound): the bootstrap called
+    the share not identifiable, its interval the whole search (C01/C10 0-9), and one rubber
+    scale at Silastic S's ratio was kept, the fit misfitting by chi2/nu 2.3e3 and theta0's
+    interval 15.7-43.5 deg. Profiled (the share held at values into the box, the rest
+    refitted, each end where chi2 on the bootstrap's scale has risen by 3.84), the share's
+    interval is 0-0.15: the runs reject Silastic S's ratio, the ratio is reported at the
+    edge (the intervals holding the fit at Silastic S's too), and the truth is inside every
+    interval."""
+    from mkm.identify import identify
+    from mkm.identify.intervals import PROFILE_RISE
+    from mkm.identify.runs import load_runs
+
+    paths = bench_runs(tmp_path, {"theta0_deg": 30.0, "C10_MPa": 0.30, "C01_MPa": 0.03,
+                                  "loadcell_gain": 1.02},
+                       (0.0, 0.1, 0.2), steps_to(2.0), (1, 2, 3), hysteresis_fraction=0.03,
+                       model="thickwall", muscle={"D0_mm": 40.0, "t0_mm": 2.5, "L0_mm": 250.0},
+                       regulator={"max_pressure_bar": 2.0})
+    result = identify(paths, params="theta0,rubber,friction", model="thickwall",
+                      search="model")
+    profiled = result.rubber["ratio_profile"]
+    assert profiled["bootstrap_interval"] == [0.0, 0.9] and profiled["widened"]
+    low, high = profiled["interval"]
+    assert low == 0.0 and 0.05 < high < 0.3
+    assert result.rubber["separated"] and result.fit.values["c01_fraction"] < 1e-6
+    table = result.parameters().set_index("parameter")
+    for name, truth in (("theta0_deg", 30.0), ("C10_MPa", 0.30), ("C01_MPa", 0.03)):
+        assert table.loc[name, "ci_low"] <= truth <= table.loc[name, "ci_high"], name
+    assert table.loc["theta0_deg", "ci_high"] - table.loc["theta0_deg", "ci_low"] < 5.0
+    # its end is where the refit's chi2 has risen by 3.84 on the scale: within the bisection's
+    # last bracket (a 64th of the way to the bound, either side)
+    best = result.fit
+    runs = load_runs(paths)
+    others = tuple(n for n in best.names if n != "c01_fraction")
+    source = fitting.ModelStatic("thickwall", cache_dir=None)
+    reach = PROFILE_RISE * profiled["residual_variance"]
+    width = (0.9 - 0.0) / 64
+    rise = [fitting.fit(source, runs, others, {**best.values, "c01_fraction": share},
+                        given={n: best.bounds[n] for n in others}).rss - best.rss
+            for share in (high - width, high + width)]
+    assert rise[0] < reach < rise[1]
+    ratio_high = high / (1 - high)
+    assert (f"C01/C10's interval (0-{ratio_high:.4g}) is a profile one: it meets a bound of its "
+            "search (0 to 9), where the bootstrap's linearised interval (0-9) says nothing; "
+            f"held at {profiled['refits']} values, the others refitted, chi2 rises by 3.84 (on "
+            "the bootstrap's scale) at its ends, or reaches the bound first") in result.notes
+    assert (f"; c01_fraction's a profile where it meets a bound of its search "
+            f"({profiled['refits']} refits, chi2 risen by 3.84 on the bootstrap's scale)"
+            ) in result.record()["interval_method"]
