@@ -903,10 +903,11 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
             **({} if "L0_mm" in best.names else
                {"rest_length_chi2_lowered": round(float(rest_lowered), 3)}),
             "said": (f"fibres: the braid's fibres stretching under their tension (about "
-                     f"{100 * strain:.2g} % at the largest, {top_tension_N:.4g} N along them "
-                     f"all: E A about {top_tension_N / strain:.3g} N) hold it as a braid of "
-                     "longer fibres, further contracted the harder it pulls and the higher the "
-                     f"pressure: fitting that (linearised) lowers chi2 by {fibres_lowered:.3g} "
+                     f"{100 * float(f'{strain:.3g}'):.2g} % at the largest, "
+                     f"{top_tension_N:.4g} N along them all: E A about "
+                     f"{top_tension_N / strain:.3g} N) hold it as a braid of longer fibres, "
+                     "further contracted the harder it pulls and the higher the pressure: "
+                     f"fitting that (linearised) lowers chi2 by {fibres_lowered:.3g} "
                      f"(chi2/nu {with_fibres / fitness.nu:.3g}"
                      f"{', within the noise' if within else ''}), where a frame yielding under "
                      f"the pull lowers it by {lowered:.3g}{rest_said}; the intervals hold the "
