@@ -2723,6 +2723,23 @@ def test_run_benchmarks_refuses_an_unknown_output():
                            f"{outputs}\n")
 
 
+def _misfits_said(draws) -> str:
+    """What the guide says of wrong-bench draws that all misfit: the verdicts' counts, the
+    chi2/nu range, the widening and theta0's widest interval, each from the record."""
+    count = {v: sum(d["verdict"] == v for d in draws) for v in ("covered", "warned", "SILENT")}
+    chi2 = [d["chi2_per_nu"] for d in draws]
+    widened = [float(re.search(r"widened by x(\S+) ", d["misfit_line"]).group(1))
+               for d in draws]
+    theta = [next(p for p in d["parameters"] if p["parameter"] == "theta0_deg")
+             for d in draws]
+    widest = max(theta, key=lambda p: p["ci_high"] - p["ci_low"])
+    assert all(d["misfit_line"] for d in draws)
+    return (f"{count['covered']} were covered, {count['warned']} warned and {count['SILENT']} "
+            f"`SILENT`: every fit misfits (chi2/nu {min(chi2):.3g}-{max(chi2):.3g}) and its "
+            f"intervals are widened x{min(widened):.3g}-{max(widened):.3g}, theta0's up to "
+            f"{widest['ci_low']:.1f}-{widest['ci_high']:.1f} deg")
+
+
 def test_the_guides_frame_that_yields_is_its_measured_file():
     """calibration.md's words on identify's defaults with a frame that yields: held to
     ``identify_wrong_range_frame.json`` (the verdicts' counts, the misfits, the widening and
@@ -2738,20 +2755,9 @@ def test_the_guides_frame_that_yields_is_its_measured_file():
         "benchmarks/bench_identify_wrong_range.py --draws 6 --seed 20261601 --departures "
         "\"frame compliance\" --out docs/measured/identify_wrong_range_frame.json")
     draws = record["draws"]
-    count = {v: sum(d["verdict"] == v for d in draws) for v in ("covered", "warned", "SILENT")}
     stiffness = [d["muscle"]["truth"]["frame_stiffness_N_per_mm"] for d in draws]
-    chi2 = [d["chi2_per_nu"] for d in draws]
-    widened = [float(re.search(r"widened by x(\S+) ", d["misfit_line"]).group(1))
-               for d in draws]
-    theta = [next(p for p in d["parameters"] if p["parameter"] == "theta0_deg")
-             for d in draws]
-    widest = max(theta, key=lambda p: p["ci_high"] - p["ci_low"])
-    assert all(d["misfit_line"] for d in draws)
     assert (f"Of the {len(draws)} draws ({min(stiffness):.3g}-{max(stiffness):.3g} N/mm), "
-            f"{count['covered']} were covered, {count['warned']} warned and {count['SILENT']} "
-            f"`SILENT`: every fit misfits (chi2/nu {min(chi2):.3g}-{max(chi2):.3g}) and its "
-            f"intervals are widened x{min(widened):.3g}-{max(widened):.3g}, theta0's up to "
-            f"{widest['ci_low']:.1f}-{widest['ci_high']:.1f} deg") in said
+            f"{_misfits_said(draws)}") in said
     sent = ("check the monitor's zero, the load cell's calibration, the muscle's wall and "
             "braid; or fit its rest length")
     assert all(sent in d["misfit_line"] for d in draws)
@@ -2813,21 +2819,9 @@ def test_the_guides_stretching_fibres_are_its_measured_file():
         "benchmarks/bench_identify_wrong_range.py --draws 3 --seed 20261601 --departures "
         "\"stretching fibres\" --out docs/measured/identify_wrong_range_fibres.json")
     draws = record["draws"]
-    count = {v: sum(d["verdict"] == v for d in draws) for v in ("covered", "warned", "SILENT")}
     strain = [100 * d["muscle"]["fibre_strain_at_top"] for d in draws]
-    chi2 = [d["chi2_per_nu"] for d in draws]
-    widened = [float(re.search(r"widened by x(\S+) ", d["misfit_line"]).group(1))
-               for d in draws]
-    theta = [next(p for p in d["parameters"] if p["parameter"] == "theta0_deg")
-             for d in draws]
-    widest = max(theta, key=lambda p: p["ci_high"] - p["ci_low"])
-    assert all(d["misfit_line"] for d in draws)
     assert (f"Of the {len(draws)} draws (fibres stretching {min(strain):.2f}-{max(strain):.2f} "
-            f"% at the top), {count['covered']} were covered, {count['warned']} warned and "
-            f"{count['SILENT']} `SILENT`: every fit misfits (chi2/nu {min(chi2):.3g}-"
-            f"{max(chi2):.3g}) and its intervals are widened x{min(widened):.3g}-"
-            f"{max(widened):.3g}, theta0's up to {widest['ci_low']:.1f}-{widest['ci_high']:.1f} "
-            "deg") in said
+            f"% at the top), {_misfits_said(draws)}") in said
     named = [d for d in draws if d["fibres"]]
     assert all(d["verdict_line"].split("; ")[1].startswith(
         "first, a braid whose fibres stretch under their tension") for d in named)
