@@ -345,7 +345,9 @@ def first_said(verdict: str | None) -> str:
     if not marks:
         return "-"
     first = verdict.split(marks[0])[1]
-    for key, said in (("trails the pressure", "lag"), ("fibres stretch", "fibres"),
+    for key, said in (("trails the pressure", "lag"),
+                      ("or a braid whose fibres stretch", "braid or fibres"),
+                      ("fibres stretch", "fibres"),
                       ("braid (the braid, creep", "braid or frame"),
                       ("frame yielding", "frame"),
                       ("first loading", "softening"),

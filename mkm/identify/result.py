@@ -657,28 +657,30 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
                   if c["what"] in ("lag between monitor and muscle", "first-cycle softening")]
     if before_all:
         return f"first, {before_all[0]}; then "
+    # a braid other than the model's also pulls less the more it pulls (a sliding sleeve named
+    # a frame lowering chi2 by 522 where the braid lowered it by 515; named fibres of 0.08 %):
+    # the braid is tried without the bench, so first
+    braid = next((c["other_braid"]["braid"] for c in cautions
+                  if c["what"] == "braid, creep or load cell gain"), None)
     if goodness.frame:
-        frame = (f"a frame yielding under the muscle's pull (about "
+        lacks = (f"a frame yielding under the muscle's pull (about "
                  f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above)")
         fix = ("stiffen the frame or measure its stiffness, or measure the muscle's held length "
                "under load, and identify again; then ")
-        braid = next((c["other_braid"]["braid"] for c in cautions
-                      if c["what"] == "braid, creep or load cell gain"), None)
-        if braid is not None:
-            # a braid other than the model's also pulls less the more it pulls (a sliding
-            # sleeve named a frame lowering chi2 by 522 where the braid lowered it by 515):
-            # the braid is tried without the bench, so first
-            return (f"first, a {braid} braid (the braid, creep or load cell note above) or "
-                    f"{frame} may be what the fit lacks: identify again with --braid {braid}; "
-                    f"if the misfit stays, {fix}")
-        return f"first, {frame} may be what the fit lacks: {fix}"
-    if goodness.fibres:
-        return ("first, a braid whose fibres stretch under their tension (about "
-                f"{100 * goodness.fibres['strain_at_largest_tension']:.2g} % at the largest: "
-                "the note above) may be what the fit lacks: measure the braid's fibres or use "
-                "a stiffer braid, and check the frame's stiffness, then identify again; then ")
-    return (pulls_late_first(groups) if goodness.pulls_late
-            else ratio_first(rubber, goodness.ratio_freed))
+    elif goodness.fibres:
+        lacks = ("a braid whose fibres stretch under their tension (about "
+                 f"{100 * goodness.fibres['strain_at_largest_tension']:.2g} % at the largest: "
+                 "the note above)")
+        fix = ("measure the braid's fibres or use a stiffer braid, and check the frame's "
+               "stiffness, then identify again; then ")
+    else:
+        return (pulls_late_first(groups) if goodness.pulls_late
+                else ratio_first(rubber, goodness.ratio_freed))
+    if braid is not None:
+        return (f"first, a {braid} braid (the braid, creep or load cell note above) or {lacks} "
+                f"may be what the fit lacks: identify again with --braid {braid}; if the misfit "
+                f"stays, {fix}")
+    return f"first, {lacks} may be what the fit lacks: {fix}"
 
 
 def pulls_late_first(groups) -> str:

@@ -300,6 +300,18 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
             "if the misfit stays, stiffen the frame or measure its stiffness, or measure the "
             "muscle's held length under load, and identify again; then the notes above"
             ) in sliding
+    # the same where fibres are named in the frame's place: seeds 20261609 and 20261624, two
+    # sliding sleeves, were sent to measure the braid's fibres (0.08 and 0.04 % at the largest)
+    fibred = Identification._verdict_line(SimpleNamespace(
+        goodness=SimpleNamespace(**{**vars(late), "fibres": {
+            "strain_at_largest_tension": 0.000839}}),
+        rubber=held, groups=GROUPS, instrument_warnings=[braid], notes=[]))
+    assert ("the estimates may be biased; first, a sliding braid (the braid, creep or load "
+            "cell note above) or a braid whose fibres stretch under their tension (about 0.084 % "
+            "at the largest: the note above) may be what the fit lacks: identify again with "
+            "--braid sliding; if the misfit stays, measure the braid's fibres or use a stiffer "
+            "braid, and check the frame's stiffness, then identify again; then the notes above"
+            ) in fibred
     within = SimpleNamespace(judged=True, misfit=[], reduced=1.1, birge_ratio=1.0,
                              ratio_freed=None, pulls_late=False, frame=None, fibres=None)
     assert "--braid" not in _verdict(within, held)
