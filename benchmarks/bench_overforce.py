@@ -83,19 +83,31 @@ def main(argv=None) -> int:
             draws.append(one(draw(rng), rng, Path(tmp) / str(k), k))
     correct = [r for d in draws for r in d["live"] if not r["instruments"]]
     low = [r for d in draws for r in d["live"] if r["instruments"]]
-    document = {"provenance": provenance(), "seed": args.seed, "draws": draws, "summary": {
-        "correct_runs": len(correct),
-        "correct_runs_stopped": sum(r["status"] != "complete" for r in correct),
-        "correct_runs_stopped_by_the_over_force_interlock": sum(
-            r["reason"].startswith("over-force interlock") for r in correct),
-        "monitor_gain_0.8_runs": len(low),
-        "monitor_gain_0.8_stopped_by_the_over_force_interlock": sum(
-            r["reason"].startswith("over-force interlock") for r in low)}}
+    emit({"provenance": provenance(), "seed": args.seed, "draws": draws,
+          "summary": stops(correct, low, "correct", 0.8)}, args.out)
+    return 0
+
+
+def stops(sound: list[dict], low: list[dict], name: str, gain: float) -> dict:
+    """The counts of the runs on correct benches (``sound``, called ``name``) and of those
+    with a monitor reading ``gain`` of the pressure (``low``): how many stopped, and how many
+    by the over-force interlock."""
+    def interlocked(runs):
+        return sum(r["reason"].startswith("over-force interlock") for r in runs)
+
+    return {f"{name}_runs": len(sound),
+            f"{name}_runs_stopped": sum(r["status"] != "complete" for r in sound),
+            f"{name}_runs_stopped_by_the_over_force_interlock": interlocked(sound),
+            f"monitor_gain_{gain:g}_runs": len(low),
+            f"monitor_gain_{gain:g}_stopped_by_the_over_force_interlock": interlocked(low)}
+
+
+def emit(document: dict, out: str | None) -> None:
+    """Print the benchmark's JSON ``document``, and write it to ``out`` where given."""
     text = json.dumps(document, indent=1, default=jsonable)
     print(text)
-    if args.out:
-        Path(args.out).write_text(text + "\n", encoding="utf-8")
-    return 0
+    if out:
+        Path(out).write_text(text + "\n", encoding="utf-8")
 
 
 if __name__ == "__main__":

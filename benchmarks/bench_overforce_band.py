@@ -25,20 +25,19 @@ identified muscle, each run's status and reason, and the counts.
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import tempfile
 from pathlib import Path
 
 import numpy as np
-from bench_overforce import QUIET, config, draw
+from bench_overforce import QUIET, config, draw, emit, stops
 
 from mkm.bench.run import acquire
 from mkm.bench.sim_settings import remove_simulator_settings
-from mkm.core.records import jsonable, provenance
+from mkm.core.records import provenance
 from mkm.fem.calibration import Calibration
-from mkm.fem.ladder import make_model
 from mkm.fem.limits import lock_eps
+from mkm.fem.thickwall import effective_eps_of_threshold
 from mkm.identify import identify
 from mkm.identify.band import force_ceiling
 
@@ -47,18 +46,6 @@ from mkm.identify.band import force_ceiling
 EPS_AT = (("threshold", 0.6), ("threshold", 0.9), ("threshold", 1.0), ("lock", 0.85))
 #: the faulty runs: a monitor reading this share of the pressure, at EPS_AT[0]
 MONITOR_GAIN = 0.8
-
-
-def threshold_eps(model, theta0_deg: float, muscle, pressure_bar: float) -> float:
-    """The eps [-] at which ``model`` (the identified muscle, its braid at ``theta0_deg``)
-    starts to pull at ``pressure_bar``: its threshold rises with eps, bisected to 1e-5."""
-    low, high = 0.0, 0.999 * lock_eps(theta0_deg)
-    while high - low > 1e-5:
-        middle = (low + high) / 2
-        threshold = float(model.predict(np.array([1.0]), muscle.D0_mm, muscle.t0_mm, middle)
-                          .extras["threshold_pressure_bar"][0])
-        low, high = (middle, high) if threshold < pressure_bar else (low, middle)
-    return round(low, 4)
 
 
 def main(argv=None) -> int:
@@ -87,10 +74,11 @@ def main(argv=None) -> int:
                   if p.get("status") == "fitted"}
         base = config(truth, 0.0, 0)
         theta0 = float(entry["theta0_deg"])
-        model = make_model("thickwall", theta0_deg=theta0, C10_MPa=entry["C10_MPa"],
-                           C01_MPa=entry["C01_MPa"], L0_mm=base.muscle.L0_mm)
         top = base.regulator.max_pressure_bar
-        eps_at = [threshold_eps(model, theta0, base.muscle, share * top)
+        # where the identified muscle starts to pull at each share of the top pressure
+        eps_at = [round(float(effective_eps_of_threshold(
+            [share * top], [base.muscle.D0_mm], [base.muscle.t0_mm], [theta0],
+            [entry["C10_MPa"]], [entry["C01_MPa"]])[0]), 4)
                   if where == "threshold" else round(share * lock_eps(theta0), 4)
                   for where, share in EPS_AT]
         drawn = rng.multivariate_normal(band["values"], band["covariance"], args.draws)
@@ -110,22 +98,11 @@ def main(argv=None) -> int:
                              "status": str(result.status), "reason": result.reason})
     sound = [r for r in live if not r["instruments"]]
     low = [r for r in live if r["instruments"]]
-    document = {"provenance": record, "seed": args.seed, "truth": truth,
-                "identified": {"band": band, "theta0_deg": entry["theta0_deg"]},
-                "eps_at": [{"where": w, "share": s, "eps": e}
-                           for (w, s), e in zip(EPS_AT, eps_at, strict=True)],
-                "runs": live, "summary": {
-                    "sound_runs": len(sound),
-                    "sound_runs_stopped": sum(r["status"] != "complete" for r in sound),
-                    "sound_runs_stopped_by_the_over_force_interlock": sum(
-                        r["reason"].startswith("over-force interlock") for r in sound),
-                    f"monitor_gain_{MONITOR_GAIN:g}_runs": len(low),
-                    f"monitor_gain_{MONITOR_GAIN:g}_stopped_by_the_over_force_interlock": sum(
-                        r["reason"].startswith("over-force interlock") for r in low)}}
-    text = json.dumps(document, indent=1, default=jsonable)
-    print(text)
-    if args.out:
-        Path(args.out).write_text(text + "\n", encoding="utf-8")
+    emit({"provenance": record, "seed": args.seed, "truth": truth,
+          "identified": {"band": band, "theta0_deg": entry["theta0_deg"]},
+          "eps_at": [{"where": w, "share": s, "eps": e}
+                     for (w, s), e in zip(EPS_AT, eps_at, strict=True)],
+          "runs": live, "summary": stops(sound, low, "sound", MONITOR_GAIN)}, args.out)
     return 0
 
 
