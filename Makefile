@@ -5,8 +5,10 @@ BIN := $(VENV)/bin
 # Strict editable install: a tree of links under build/ that type checkers, IDEs and import-graph
 # readers resolve (mkm.fem is fem/, ...). A module added or removed changes its folder, which
 # installs again. setuptools prints an informational banner (a UserWarning) about folders named
-# as the package; here the folder is the package: install quietly.
-PIP_INSTALL := PYTHONWARNINGS=ignore::UserWarning $(BIN)/python -m pip install --quiet
+# as the package; here the folder is the package: install quietly. uv resolves and installs the
+# same versions as pip, in parallel: the test extras on an empty cache took 37 s of CPU with pip
+# and 5 s with uv (3 min and 36 s of wall time, on this machine under load).
+PIP_INSTALL := PYTHONWARNINGS=ignore::UserWarning $(BIN)/uv pip install --quiet --python $(BIN)/python
 EDITABLE := --config-settings editable_mode=strict -e
 # (with a trailing slash: `bench` is also a target)
 PACKAGE_DIRS := $(shell find mkm bench fem surrogate -type d -not -name __pycache__ -printf '%p/ ')
@@ -15,7 +17,7 @@ PACKAGE_DIRS := $(shell find mkm bench fem surrogate -type d -not -name __pycach
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet --upgrade pip "uv>=0.13"
 
 $(VENV)/.installed: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/python
 	$(PIP_INSTALL) $(EDITABLE) .
