@@ -49,6 +49,7 @@ from mkm.core.home import user_state
 from mkm.core.records import (
     file_sha256,
     finite_or_null,
+    one_argument,
     spreadsheet_safe_text,
     write_json_atomic,
 )
@@ -781,7 +782,7 @@ def _kept_elsewhere(path: Path) -> list[str]:
         return []
     span = f"{sample.iloc[0]}-{sample.iloc[-1]}" if len(sample) > 1 else f"{sample.iloc[0]}"
     return [f"samples {span} ({len(sample)}) are not in samples.csv: the run folder refused "
-            f"them, and they are kept in {kept} (`mkm recover {path}` joins them to "
+            f"them, and they are kept in {kept} (`mkm recover {one_argument(path)}` joins them to "
             "samples.csv once the folder takes writes again)"]
 
 
