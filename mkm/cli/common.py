@@ -129,7 +129,8 @@ SHARED_HELP = {
                      "lines (in a log or a pipe); the summary line and the result's path stay",
     "--eps": "shortening ratio, a fraction (0.05) or a percentage (5%%)",
     "--pressures": "pressures in bar: start:stop:step (stop included where the steps reach "
-                   "it, never exceeded: 0:8:3 is 0, 3, 6) or a comma list",
+                   "it, never exceeded: 0:8:3 is 0, 3, 6) or a comma list (with decimal "
+                   "commas, a semicolon list: 0,5;1;1,5)",
     "--D0": "inner tube diameter [mm]",
     "--t0": "wall thickness [mm]",
     "--L0": "muscle length at rest [mm]",
