@@ -9,7 +9,7 @@ regulator command, reads blocks of raw volts on a hardware clock, writes the com
 path; :mod:`mkm.bench.backends` is the one list of backends.
 
 Failures are raised as :class:`BenchError` subclasses with one-line messages (the NI backend maps
-NI-DAQmx status codes to them).
+NI-DAQmx status codes to them); :func:`in_words` says one to the user, with what to do.
 """
 
 from __future__ import annotations
@@ -61,6 +61,47 @@ class AOWriteFailed(BenchError):
 
 class DeviceReserved(BenchError):
     """Another task or program holds the device."""
+
+
+#: What an error of the device means and what to do, by its class (first match).
+ERROR_WORDS: dict[type[BenchError], str] = {
+    DaqDisconnected: "the DAQ device stopped answering: check its USB cable and power",
+    ReadTimeout: "the DAQ device sent no samples in time: check its USB cable and power",
+    BufferOverflow: "samples were lost, read from the DAQ device too late: close other "
+                    "programs that load the PC",
+    AOWriteFailed: "the regulator command did not reach the DAQ device: check its USB cable "
+                   "and power",
+    DeviceReserved: "another program holds the DAQ device (NI MAX's test panel, LabVIEW, "
+                    "another mkm): close it, then try again",
+}
+
+
+def in_words(exc: BaseException) -> str:
+    """``exc`` as the user reads it, one line: an error of the device in words, with what to
+    do (:data:`ERROR_WORDS`) and the driver's own words in brackets; another
+    :class:`BenchError` by its message (written for the user); an operating system's error by
+    its description and the file it names; any other (an error of mkm's own) by its class and
+    message, which say where to look."""
+    text = " ".join(str(exc).split())  # one line, whatever the driver's message holds
+    words = next((w for cls, w in ERROR_WORDS.items() if isinstance(exc, cls)), None)
+    if words is not None:
+        return f"{words} ({text})" if text else words
+    if isinstance(exc, BenchError) and text:
+        return text
+    if isinstance(exc, OSError):
+        where = exc.filename2 or exc.filename
+        said = exc.strerror or text or "the system gave no description"
+        return f"{said}: {where}" if where else said
+    return f"{type(exc).__name__}: {text}" if text else type(exc).__name__
+
+
+def device_said(exc: BaseException) -> str:
+    """:func:`in_words` of an error the device raised: an operating system's error there (a
+    crash inside the driver's DLL, a USB stack's I/O error) said as the device's."""
+    if isinstance(exc, OSError):
+        return (f"the DAQ device or its driver failed ({in_words(exc)}): check its USB cable and "
+                "power")
+    return in_words(exc)
 
 
 @dataclass(frozen=True)

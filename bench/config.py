@@ -820,7 +820,8 @@ def copy_example_config(path: str | Path) -> Path:
     if path.exists():
         raise ValueError(f"{path} exists: kept as it is; name a new file for the example")
     if not path.parent.is_dir():
-        raise ValueError(f"{path.parent}: no such folder")
+        raise ValueError(f"--example {str(path)!r}: no such folder {str(path.parent)!r}: "
+                         "expected the file in an existing folder (make it first)")
     return write_atomic(path, example_config().read_text("utf-8"))
 
 

@@ -55,7 +55,11 @@ def error_for_code(code: int, message: str, default: type[BenchError] = BenchErr
     """The :class:`BenchError` for an NI-DAQmx status ``code``; ``default`` for unmapped codes."""
     cls = NI_ERROR_CODES.get(int(code), default)
     first_line = message.strip().splitlines()[0] if message.strip() else "no description"
-    return cls(f"NI-DAQmx error {code}: {first_line}")
+    said = f"NI-DAQmx error {code}: {first_line}"
+    if cls is BenchError:  # what its code means is NI's to say: where to look
+        said = (f"the DAQ device or its driver failed ({said}): check its USB cable and power, "
+                "and run its self-test in NI MAX")
+    return cls(said)
 
 
 DRIVER_MISSING = ("NI-DAQmx, NI's driver of the USB-6001, is not installed: on Windows type "

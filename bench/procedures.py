@@ -18,7 +18,14 @@ from contextlib import contextmanager
 import numpy as np
 from scipy import stats
 
-from mkm.bench.backend import AOWriteFailed, Backend, BenchError, DaqDisconnected, DeviceInfo
+from mkm.bench.backend import (
+    AOWriteFailed,
+    Backend,
+    BenchError,
+    DaqDisconnected,
+    DeviceInfo,
+    in_words,
+)
 from mkm.bench.budget import budget_table, expected_budget
 from mkm.bench.config import BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.ownership import BenchOwner, StateFolderBroken, request_stop
@@ -261,7 +268,7 @@ def _refused_again(write, notify) -> None:
         except AOWriteFailed as exc:
             if attempt == VENT_WRITES:
                 raise
-            notify(f"vent command failed ({type(exc).__name__}: {exc}), tried again")
+            notify(f"vent command failed ({in_words(exc)}), tried again")
 
 
 def _mark(owner: BenchOwner, key: str, check: VentCheck) -> list[str]:

@@ -27,7 +27,7 @@ import threading
 import time
 from pathlib import Path
 
-from mkm.bench.backend import DeviceInfo
+from mkm.bench.backend import DeviceInfo, in_words
 from mkm.bench.bounded import call_within
 from mkm.bench.config import BenchConfig
 from mkm.bench.storage import (
@@ -184,7 +184,7 @@ class Recorder:
                 self._do(*op)
         except BaseException as exc:
             with self._cond:
-                self.crashed = f"{type(exc).__name__}: {exc}"
+                self.crashed = in_words(exc)
                 self._busy = False
                 self._cond.notify_all()
 
@@ -231,7 +231,7 @@ class Recorder:
                     self._synced_at, self._unsynced = time.monotonic(), False
             except Exception as exc:  # the disk, or a bug: said in the reason, not lost
                 failure = exc if isinstance(exc, OSError) else \
-                    OSError(f"{type(exc).__name__}: {exc}")
+                    OSError(in_words(exc))
                 with self._cond:
                     self._failures.append((what, failure))
                     self._rows_lost = self._rows_lost or lost
@@ -304,8 +304,7 @@ class Recorder:
                          f"did not answer within {STATE_WAIT_S:g} s (it hangs): kept once it "
                          "answers, lost if this process ends first")
         elif exc is not None:
-            self.kept = (f"{lost}, nor kept in {self.kept_path} ({type(exc).__name__}: "
-                         f"{exc})")
+            self.kept = f"{lost}, nor kept in {self.kept_path} ({in_words(exc)})"
         else:
             self.kept = f"{lost}: samples {span} are kept in {self.kept_path}"
 
@@ -426,8 +425,7 @@ class Recorder:
             self.writer.close()
         except Exception as exc:  # noqa: BLE001 - any failure of the close: the outcome still
             whole = False
-            problems.append(f"the run's files could not all be synced ({type(exc).__name__}: "
-                            f"{exc})")
+            problems.append(f"the run's files could not all be synced ({in_words(exc)})")
         else:
             if self._refused:  # rows a full disk refused went out at close: count the disk's
                 self.meta.counters["samples"] = self.writer.samples_on_disk(
@@ -436,12 +434,12 @@ class Recorder:
             self._save_retrying()
         except PermissionError as exc:
             self.outcome_refused = True
-            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc}; "
+            problems.append(f"run.json could not be written ({in_words(exc)}; "
                             f"tried {LOCKED_RETRIES + 1} times over "
                             f"{LOCKED_RETRIES * LOCKED_RETRY_S:g} s)")
         except OSError as exc:
             self.outcome_refused = True
-            problems.append(f"run.json could not be written ({type(exc).__name__}: {exc})")
+            problems.append(f"run.json could not be written ({in_words(exc)})")
         self.whole = whole and not self.outcome_refused
         return problems
 
@@ -456,7 +454,7 @@ class Recorder:
                 self._do("last try", None)
         except BaseException as exc:  # never raises: the outcome must still be recorded
             return (f"the recorder's thread failed ({self.crashed}), and so did writing the "
-                    f"{self.held_rows} samples it held ({type(exc).__name__}: {exc})")
+                    f"{self.held_rows} samples it held ({in_words(exc)})")
         if self._unwritten:
             return f"the recorder's thread failed ({self.crashed}), and {self.kept}"
         return (f"the recorder's thread failed ({self.crashed}): the {held} samples it held "
@@ -491,5 +489,5 @@ class Recorder:
         more = f", and {len(untold) - 1} later write(s)" if len(untold) > 1 else ""
         if any(w.startswith("samples") for w, _ in untold):
             kept = "written again" if not self._unwritten else self.kept
-            return [f"the disk refused {what} ({type(exc).__name__}: {exc}){more}; {kept}"]
-        return [f"recording failed for {what} ({type(exc).__name__}: {exc}){more}"]
+            return [f"the disk refused {what} ({in_words(exc)}){more}; {kept}"]
+        return [f"recording failed for {what} ({in_words(exc)}){more}"]

@@ -62,7 +62,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from mkm.bench import backends
-from mkm.bench.backend import Backend, BenchError, DaqDisconnected, DriverMissing
+from mkm.bench.backend import (
+    Backend,
+    BenchError,
+    DaqDisconnected,
+    DriverMissing,
+    device_said,
+    in_words,
+)
 from mkm.bench.bounded import call_within
 from mkm.bench.config import MONITOR_FAULT, BenchConfig, estimate_duration_s, plan_steps
 from mkm.bench.operator import Operator
@@ -481,7 +488,7 @@ class _ReadWatchdog:
             return False, (f"the watchdog's vent command did not return within "
                            f"{WATCHDOG_WRITE_S:g} s (the driver hangs for it too): VENT BY HAND")
         if exc is not None:
-            return False, (f"the watchdog's vent command failed ({type(exc).__name__}: {exc}): "
+            return False, (f"the watchdog's vent command failed ({in_words(exc)}): "
                            "VENT BY HAND")
         return True, "vented by the watchdog"
 
@@ -704,17 +711,16 @@ class BenchRun:
             what = self.recorder.refused(outcome) if self.recorder is not None else ""
             status, exit_code = RunStatus.FAILED, EXIT_STORAGE
             reason = (f"recording failed{f' for {what}' if what else ''} "
-                      f"({type(outcome).__name__}: {outcome})")
+                      f"({in_words(outcome)})")
         elif isinstance(outcome, DeadRunsVentHung | DriverHangs):  # said whole; the device is
             # asked no more
             status, reason, self._device_hangs = RunStatus.FAILED, str(outcome), True
         elif isinstance(outcome, DriverMissing):  # what to install, said whole
             status, reason = RunStatus.FAILED, str(outcome)
-        elif isinstance(outcome, BenchError | OSError):  # the device, its driver, the console
-            status, reason = RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}"
+        elif isinstance(outcome, BenchError | OSError):  # the device, its driver: not the disk
+            status, reason = RunStatus.FAILED, device_said(outcome)
         elif outcome is not None:
-            status, reason, error = (RunStatus.FAILED, f"{type(outcome).__name__}: {outcome}",
-                                     outcome)
+            status, reason, error = RunStatus.FAILED, in_words(outcome), outcome
         if isinstance(late, StopSignal | KeyboardInterrupt):  # in the record, whatever it ends
             name = late.name if isinstance(late, StopSignal) else "SIGINT"
             if signal_number is None:
@@ -844,7 +850,7 @@ class BenchRun:
             self.backend.revive()
         except BaseException as exc:
             return False, (f"{lost}; resetting the device did not bring it back "
-                           f"({type(exc).__name__}: {exc})")
+                           f"({in_words(exc)})")
         self._started = True  # a fresh AI task runs: the vent is verified as always
         done = f"{lost}: the device was reset and vented on a fresh task"
         if self.acquisition is not None:
@@ -853,7 +859,7 @@ class BenchRun:
                 self.acquisition.command(0.0, "vent")
             except BaseException as exc:  # 0 V was written by revive(); its record failed
                 return True, (f"{done}, but recording that vent failed "
-                              f"({type(exc).__name__}: {exc})")
+                              f"({in_words(exc)})")
         return True, done
 
     def _keep_books(self, status: RunStatus, reason: str, problems: list[str], signal_name,
@@ -884,7 +890,7 @@ class BenchRun:
             return []
         except BaseException as exc:  # a device half closed by a failed revive, a Ctrl-C
             return [f"the samples acquired before the stop could not be recorded "
-                    f"({type(exc).__name__}: {exc})"]
+                    f"({in_words(exc)})"]
         return []
 
     def _verify(self, gone: bool = False) -> VentCheck:
@@ -911,7 +917,7 @@ class BenchRun:
                                vented_zero=zero)
         except BaseException as exc:
             return VentCheck(False, float("nan"), below, 0.0, "monitor",
-                             f"{type(exc).__name__}: {exc}")
+                             in_words(exc))
 
     def _weighed(self, acq: Acquisition, check: VentCheck) -> VentCheck:
         """The vent check weighed by what the monitor read before the vent: one that read
@@ -969,7 +975,7 @@ class BenchRun:
             try:
                 closing = close_within(self.backend) if self._opened else ""
             except BaseException as exc:
-                closing = f"closing the device failed ({type(exc).__name__}: {exc})"
+                closing = f"closing the device failed ({in_words(exc)})"
             return self._record(status, reason, [closing] if closing else [],
                                 lambda problems: problems, signal_name, signal_number)
         problems = []
@@ -990,7 +996,7 @@ class BenchRun:
                 problems.append(f"the vent command was interrupted ({type(failure).__name__}) "
                                 "and written again")
             else:
-                problems.append(f"vent command failed ({type(failure).__name__}: {failure}), "
+                problems.append(f"vent command failed ({in_words(failure)}), "
                                 "tried again")
             failure = self._write_vent(acq)
         if self._watchdog is not None:  # no vent of its own from here on: reads watched
@@ -1012,13 +1018,13 @@ class BenchRun:
         if failure is not None:  # the device may be gone; closing must still happen
             exc = failure
             if acq is not None and acq.written:  # written; only its record failed
-                problems.append(f"recording the vent failed ({type(exc).__name__}: {exc})")
+                problems.append(f"recording the vent failed ({in_words(exc)})")
             elif isinstance(exc, DaqDisconnected) and revive:
-                back, said = self._revive(f"vent command failed ({type(exc).__name__}: {exc})")
+                back, said = self._revive(f"vent command failed ({in_words(exc)})")
                 problems.append(said)
                 revive, gone, written = False, not back, back
             else:
-                problems.append(f"vent command failed ({type(exc).__name__}: {exc})")
+                problems.append(f"vent command failed ({in_words(exc)})")
         if acq is not None and self._started and not gone:
             problems.extend(self._drain(acq))
         if self.signals.grace_deadline() is not None:
@@ -1055,7 +1061,7 @@ class BenchRun:
         try:
             closing = close_within(self.backend)
         except BaseException as exc:
-            closing = f"closing the device failed ({type(exc).__name__}: {exc})"
+            closing = f"closing the device failed ({in_words(exc)})"
         if closing:
             problems.append(closing)
         return self._record(status, reason, problems, told, signal_name, signal_number)

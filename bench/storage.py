@@ -49,6 +49,7 @@ from mkm.core.home import user_state
 from mkm.core.records import (
     file_sha256,
     finite_or_null,
+    one_argument,
     spreadsheet_safe_text,
     write_json_atomic,
 )
@@ -263,10 +264,31 @@ class RunMeta:
 
     def recording(self) -> str:
         """``"is still being recorded (pid N)"`` for a run whose ``mkm acquire`` still runs on
-        this machine, else ``""``: its files hold what was on disk a moment ago."""
-        if self.status == RunStatus.RUNNING and self.process and self.process.alive():
+        this machine, what is known of one whose record another PC holds open (a run folder on
+        a share: that PC's processes cannot be seen from here), else ``""``: its files hold what
+        was on disk a moment ago."""
+        if self.status != RunStatus.RUNNING or not self.process:
+            return ""
+        if self.process.alive():
             return f"is still being recorded (pid {self.process.pid})"
+        if self.recorded_on():
+            return (f"may still be recorded on {self.recorded_on()} (its run.json says running, "
+                    "and this PC cannot see that PC's processes)")
         return ""
+
+    def recorded_on(self) -> str:
+        """The other PC whose ``mkm acquire`` wrote this run's record, or ``""`` (this PC's)."""
+        host = self.process.host if self.process else ""
+        return host if host and host.casefold() != socket.gethostname().casefold() else ""
+
+    def until_ended(self) -> str:
+        """When a run that :meth:`recording` holds has its whole record: ``"once its mkm
+        acquire has ended"``, with where and how when another PC holds it."""
+        if not self.recorded_on():
+            return "once its mkm acquire has ended"
+        return (f"once its mkm acquire on {self.recorded_on()} has ended (a run that stopped "
+                "there without closing its record is closed by the next mkm command on that "
+                f"bench there, such as mkm vent on {self.recorded_on()})")
 
     def as_dict(self) -> dict[str, Any]:
         """run.json's content: strict JSON, so nothing read (a vent check on a lost device or
@@ -760,7 +782,7 @@ def _kept_elsewhere(path: Path) -> list[str]:
         return []
     span = f"{sample.iloc[0]}-{sample.iloc[-1]}" if len(sample) > 1 else f"{sample.iloc[0]}"
     return [f"samples {span} ({len(sample)}) are not in samples.csv: the run folder refused "
-            f"them, and they are kept in {kept} (`mkm recover {path}` joins them to "
+            f"them, and they are kept in {kept} (`mkm recover {one_argument(path)}` joins them to "
             "samples.csv once the folder takes writes again)"]
 
 
@@ -1169,16 +1191,14 @@ def load_run(path: str | Path) -> Run:
     if status == RunStatus.RUNNING and not (meta.process and meta.process.alive()):
         status = RunStatus.INCOMPLETE
         fatal = fatal_error(path)  # the trace faulthandler wrote as the process died
-        host = meta.process.host if meta.process else ""
         if fatal:
             problems.append(f"the run's process died of a fatal error ({fatal}) without closing "
                             "its record: the trace of the thread that faulted is in "
                             f"{path / FATAL_TRACE_FILE}")
-        elif host and host != socket.gethostname():  # a run folder on a share: its processes
-            # are another PC's
-            problems.append(f"the run's record is open, written by mkm acquire on {host}: this "
-                            "PC cannot tell whether it still records there or stopped without "
-                            "closing its record (killed or crashed)")
+        elif meta.recorded_on():  # a run folder on a share: its processes are another PC's
+            problems.append(f"the run's record is open, written by mkm acquire on "
+                            f"{meta.recorded_on()}: this PC cannot tell whether it still records "
+                            "there or stopped without closing its record (killed or crashed)")
         else:
             problems.append("the run stopped without closing its record (killed or crashed)")
         # run.json's counter is from its last rewrite; the rows on disk are the truth

@@ -27,7 +27,13 @@ import time
 from dataclasses import asdict, dataclass
 
 from mkm.bench import backends
-from mkm.bench.backend import BenchError, BufferOverflow, DaqDisconnected, ReadTimeout
+from mkm.bench.backend import (
+    BenchError,
+    BufferOverflow,
+    DaqDisconnected,
+    ReadTimeout,
+    in_words,
+)
 from mkm.bench.config import MAX_VENT_TIMEOUT_S
 
 
@@ -398,7 +404,7 @@ def verify_vent(backend, config, operator=None, started: bool = True,
     except BufferOverflow:
         backend.recover()
     except BenchError as exc:
-        return VentCheck(False, pressure, below, 0.0, "monitor", f"{type(exc).__name__}: {exc}",
+        return VentCheck(False, pressure, below, 0.0, "monitor", in_words(exc),
                          isinstance(exc, DaqDisconnected))
     while True:
         cut, now, read_s = deadline(), time.monotonic(), config.daq.read_timeout_s
@@ -421,11 +427,11 @@ def verify_vent(backend, config, operator=None, started: bool = True,
             if timeouts > config.daq.read_retries or waited > (
                     FALLING_MAX_S if waited_why else timeout_s):
                 return VentCheck(False, pressure, below, waited, "monitor",
-                                 f"{type(exc).__name__}: {exc}")
+                                 in_words(exc))
             continue
         except BenchError as exc:
             return VentCheck(False, pressure, below, time.monotonic() - start, "monitor",
-                             f"{type(exc).__name__}: {exc}", isinstance(exc, DaqDisconnected))
+                             in_words(exc), isinstance(exc, DaqDisconnected))
         record(block)
         timeouts = 0
         monitor_V = float(block.volts[-1, 1])

@@ -56,7 +56,7 @@ from contextlib import nullcontext
 import numpy as np
 
 from mkm.bench import backends
-from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout
+from mkm.bench.backend import Backend, BenchError, BufferOverflow, ReadTimeout, in_words
 from mkm.bench.config import BenchConfig
 from mkm.bench.ownership import StateFolderBroken
 from mkm.bench.preflight import (
@@ -368,7 +368,7 @@ class Acquisition:
             self.recorder.samples(rows)
         except Exception as exc:
             return (f"the samples of the vent check could not be recorded "
-                    f"({type(exc).__name__}: {exc})")
+                    f"({in_words(exc)})")
         return ""
 
     def _first(self, block) -> int:
@@ -782,11 +782,11 @@ class Acquisition:
         except Exception as exc:
             if self.written:  # the vent went out; only its record (or marker) failed
                 stop = Stop(status, f"{message}; vented, but recording the interlock's vent "
-                            f"failed ({type(exc).__name__}: {exc})")
+                            f"failed ({in_words(exc)})")
             else:  # the shutdown vents again and says whether that was verified
                 self.interlock_vent_failed = True
                 stop = Stop(status, f"{message}; the interlock's vent command failed "
-                            f"({type(exc).__name__}: {exc})")
+                            f"({in_words(exc)})")
             stop.__cause__ = exc
             return stop
         return Stop(status, f"{message}; vented")

@@ -194,7 +194,9 @@ def register(subparsers) -> None:
 
 
 def _failed(args, exc: Exception) -> int:  # a mkm.bench.backend.BenchError
-    say(args, "error", exc)
+    from mkm.bench.backend import in_words
+
+    say(args, "error", in_words(exc))
     return EXIT_FAILED
 
 
@@ -395,15 +397,19 @@ def _check(args) -> int:
 
 
 def _vent(args) -> int:
-    from mkm.bench.backend import BenchError  # here: the bench loads pandas
+    from mkm.bench.backend import BenchError, device_said  # here: the bench loads pandas
     from mkm.bench.procedures import vent
     from mkm.bench.vent import reading_bar
 
     config = _hardware_config(args, "vent")
     try:
         out = vent(config, clock=args.clock)
-    except BenchError as exc:  # said once where the reason says it already
-        error = str(exc) if "VENT BY HAND" in str(exc) else f"{exc}; VENT BY HAND"
+    except BrokenPipeError:  # the reader left: not the device's failure
+        raise
+    except (BenchError, OSError) as exc:  # the device, its driver (an OSError of a DLL's
+        # crash, a USB stack's I/O error): said once where the reason says it already
+        said = device_said(exc)
+        error = said if "VENT BY HAND" in said else f"{said}; VENT BY HAND"
         return _kept(EXIT_FAILED, lambda: say(args, "error", error))
     said = ("vent commanded; the regulator is manual: no monitor to read, vent it by hand and "
             "check the manometer" if out["manual"] else

@@ -11,6 +11,7 @@ from pathlib import Path
 
 from mkm.core.ranges import parse_fraction, parse_number, parse_pressures, parse_shortenings
 from mkm.core.records import (
+    one_argument,
     prediction_metadata,
     sidecar_path,
     write_csv_with_sidecar,
@@ -88,7 +89,7 @@ def say(args, kind: str, message) -> None:
 def next_commands(paths, eps) -> str:
     """What a newcomer types after recording or importing the run folders ``paths`` (at the
     shortenings ``eps``): the report of them, and identify where they hold two eps or more."""
-    typed = " ".join(f'"{p}"' if " " in str(p) else str(p) for p in paths)
+    typed = " ".join(map(one_argument, paths))
     fit = (f"mkm identify {typed} fits the muscle's braid angle and rubber to them"
            if len({round(float(e), 6) for e in eps}) > 1 else
            "mkm identify with runs of this muscle at two eps or more fits its braid angle and "
@@ -128,7 +129,8 @@ SHARED_HELP = {
                      "lines (in a log or a pipe); the summary line and the result's path stay",
     "--eps": "shortening ratio, a fraction (0.05) or a percentage (5%%)",
     "--pressures": "pressures in bar: start:stop:step (stop included where the steps reach "
-                   "it, never exceeded: 0:8:3 is 0, 3, 6) or a comma list",
+                   "it, never exceeded: 0:8:3 is 0, 3, 6) or a comma list (with decimal "
+                   "commas, a semicolon list: 0,5;1;1,5)",
     "--D0": "inner tube diameter [mm]",
     "--t0": "wall thickness [mm]",
     "--L0": "muscle length at rest [mm]",

@@ -55,12 +55,13 @@ def _path(args) -> int:
 
 def _copy(args) -> int:
     from mkm.cli.common import say
+    from mkm.core.records import one_argument
     from mkm.paths import copy_published_table
 
     copied = copy_published_table(args.name, args.to)
     print(copied)
     # what a newcomer types next: the table holds several muscles, none of their walls
-    say(args, "note", f"import it with mkm import {copied} --id ID --D0 MM --t0 MM --muscle "
-        "NAME (its # header names its muscles and their geometry; the guide's run folders "
-        "page gives the lines for each)")
+    say(args, "note", f"import it with mkm import {one_argument(copied)} --id ID --D0 MM --t0 "
+        "MM --muscle NAME (its # header names its muscles and their geometry; the guide's run "
+        "folders page gives the lines for each)")
     return 0

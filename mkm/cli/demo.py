@@ -23,7 +23,7 @@ def register(subparsers) -> None:
 
 
 def _demo(args) -> int:
-    from mkm.bench.backend import BenchError  # here: the bench loads pandas
+    from mkm.bench.backend import BenchError, in_words  # here: the bench loads pandas
     from mkm.cli.bench import EXIT_FAILED
     from mkm.demo import run_demo
     from mkm.progress import summary_line
@@ -33,7 +33,7 @@ def _demo(args) -> int:
         path = run_demo(args.out, progress=not args.no_progress,
                         notify=lambda line: summary_line("demo", line))
     except BenchError as exc:  # the simulated bench held by another process, a run cut short
-        say(args, "error", exc)
+        say(args, "error", in_words(exc))
         return EXIT_FAILED
     summary_line("demo", f"2 simulated runs (eps 0 and 12.2 %) and their report in "
                  f"{time.perf_counter() - start:.0f} s")

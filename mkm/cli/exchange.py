@@ -284,15 +284,15 @@ def _export(args) -> int:
 
     from mkm.bench.exchange import export_run
     from mkm.bench.folders import one_run_folder
-    from mkm.bench.storage import read_meta
+    from mkm.bench.storage import load_run
     from mkm.paths import default_out
 
     args.run = one_run_folder(args.run)
     name = Path(args.run).name
     out = args.out or default_out("export", name + (".xlsx" if args.format == "xlsx" else ""))
-    recording = read_meta(args.run).recording()
+    run = load_run(args.run)  # the status the export records
     print(export_run(args.run, out, args.format))
-    if recording:
-        say(args, "note", f"{name} {recording}: the export holds its record so far (status "
-            "running); export it again once its mkm acquire has ended")
+    if run.meta.recording():
+        say(args, "note", f"{name} {run.meta.recording()}: the export holds its record so far "
+            f"(status {run.status}); export it again {run.meta.until_ended()}")
     return 0

@@ -133,10 +133,14 @@ def decimal_comma_reading(text: str) -> float | None:
 
 def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
     """``"start:stop:step"`` or a comma list, in bar (a number typed with another unit of
-    pressure, ``250kPa``, converted); gauge pressures >= 0."""
+    pressure, ``250kPa``, converted), or a semicolon list of numbers with decimal commas, as
+    Windows writes a list where the comma is decimal (``0,5;1;1,5``); gauge pressures >= 0."""
     import numpy as np
 
     text = text.strip()
+    if ";" in text and ":" not in text:
+        return parse_pressures(",".join(p.strip().replace(",", ".") for p in text.split(";")),
+                               name)
     # '0,100,200kPa': 100 would be read in bar (a zero is zero in every unit)
     number = r"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*"
     entries = [p for p in re.split(r"[:,]", text) if not re.fullmatch(r"\s*[+-]?0*\.?0*\s*", p)]

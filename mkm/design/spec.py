@@ -3,12 +3,11 @@
 from __future__ import annotations
 
 import re
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
 from mkm.core.ranges import parse_fraction, parse_number
-from mkm.core.toml_text import saved_as_hint, saved_text, toml_hint
+from mkm.core.toml_text import read_toml_file
 from mkm.fem.calibration import Calibration, calibrated
 from mkm.fem.limits import check_value
 from mkm.fem.materials import MATERIALS, MooneyRivlin, mooney_rivlin
@@ -273,16 +272,7 @@ def load_spec(path) -> dict:
     fields of :class:`Constraints`), ``objective`` and ``top``. Unknown keys are errors.
     """
     path = Path(path)
-    try:
-        text = saved_text(path.read_bytes())  # a Windows editor's
-        table = tomllib.loads(text)
-    except FileNotFoundError:
-        raise ValueError(f"--spec {path}: no such file{saved_as_hint(path)}") from None
-    except UnicodeDecodeError as exc:
-        raise ValueError(f"--spec {path} is not valid TOML (UTF-8): {exc}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"--spec {path} is not valid TOML: {exc}{toml_hint(text, exc)}") \
-            from None
+    _, table = read_toml_file(path, "--spec ", "a design spec (a TOML file)")
     unknown = sorted(set(table) - SPEC_KEYS)
     if unknown:
         raise ValueError(f"--spec {path}: unknown key(s) {', '.join(unknown)}: expected some of "

@@ -32,7 +32,6 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
-import shlex
 import time
 import warnings
 
@@ -40,6 +39,7 @@ import numpy as np
 from scipy import optimize
 from scipy.stats import chi2
 
+from mkm.core.records import one_argument
 from mkm.fem.batch import Runner
 from mkm.fem.calibration import Calibration
 from mkm.fem.ladder import MODELS, STATIC_FAMILIES
@@ -1775,13 +1775,13 @@ def search_model_note(test: dict, runs, options) -> str:
     """The note where the FE model may separate C10 and C01 that the surrogate's box left
     together (:func:`fe_ratio_test`), with the command that tests it."""
     low, high = test["ratio_ci"]
-    paths = " ".join(shlex.quote(str(run.path)) for run in runs)
+    paths = " ".join(one_argument(run.path) for run in runs)
     return (f"the surrogate's box cut the test of C10 and C01, and the FE model may separate "
             f"them: its change with the ratio at this optimum puts C01/C10 at "
             f"{test['ratio']:.3g} (95 % interval {low:.3g}-{high:.3g}, linearised; "
             f"{test['assumed_from']} {test['assumed']:.3g}); to test it, identify again with the "
             f"FE model searching (one sweep per run and evaluation): mkm identify {paths} "
-            f"{' '.join(shlex.quote(o) for o in options)}")
+            f"{' '.join(map(one_argument, options))}")
 
 
 def fe_ratio_test(source, fe: ModelStatic, runs, best, braid: str | None) -> dict:

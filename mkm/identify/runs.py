@@ -267,7 +267,7 @@ def load_run_data(path) -> RunData:
     path = Path(path)
     if run.meta.recording():  # its steps so far would be identified as the whole run
         raise ValueError(f"run {path.name} {run.meta.recording()}: expected a run that has "
-                         "ended (identify it once its mkm acquire has ended)")
+                         f"ended (identify it {run.meta.until_ended()})")
     note = unverified_vent(run, path.name) if str(run.status) == "failed" else ""
     if run.rows_lost:  # steps whose hold samples are gone would be fitted as forces of zero
         raise ValueError(f"run {path.name}: {run.rows_lost[0]}: expected the whole record to "

@@ -82,6 +82,23 @@ def test_vent_with_a_full_state_folder_vents_then_says_so(mkm_cli, monkeypatch):
     assert code == 1 and "not writable (No space left on device)" in err
 
 
+def test_vent_whose_device_raises_an_os_error_asks_for_a_vent_by_hand(mkm_cli, monkeypatch):
+    # the driver raises an OSError at the open (a crash inside its DLL, a USB stack's I/O
+    # error): `mkm vent` said "[Errno 5] Input/output error", exit 2, as a bad argument, and
+    # never that the muscle may still be pressurised
+    from mkm.bench.sim import SimBackend
+
+    def broken(self):
+        raise OSError(errno.EIO, "Input/output error")
+
+    monkeypatch.setattr(SimBackend, "open", broken)
+    code, out, err = mkm_cli(["vent", "--backend", "sim"])
+    assert code == 1 and out == ""
+    assert err.splitlines()[-1] == ("mkm vent: error: the DAQ device or its driver failed "
+                                    "(Input/output error): check its USB cable and power; VENT "
+                                    "BY HAND")
+
+
 def test_vent_with_a_state_folder_that_hangs_vents_then_says_so(monkeypatch):
     # the state folder (a roaming profile on a network share) hangs as `mkm vent` looks for a
     # run holding the bench: the vent never went out. Now it goes out once the state folder has
@@ -610,8 +627,8 @@ def test_read_timeouts_in_the_vent_check_are_retried_as_at_0_bar(config, tmp_pat
         assert check["verified"] and check["pressure_bar"] < c.safety.vent_below_bar
     else:
         assert result.exit_code == 4 and result.manual_vent_required
-        assert "the vent could not be verified (ReadTimeout: simulated read timeout" \
-            in result.reason
+        assert ("the vent could not be verified (the DAQ device sent no samples in time: check "
+                "its USB cable and power (simulated read timeout") in result.reason
         assert not check["verified"]
 
 
@@ -731,7 +748,8 @@ def test_a_state_folder_problem_is_named_not_called_a_recording_failure(config, 
     monkeypatch.setattr(BenchLease, "command", full)
     result = acquire(config, out_root=tmp_path, **QUIET)
     assert result.status == "failed" and result.exit_code == 1
-    assert "StateFolderBroken: the bench marker" in result.reason
+    assert result.reason.startswith("the bench marker ")
+    assert "could not be written (No space left on device)" in result.reason
     assert "recording failed" not in result.reason and "0.5 bar not commanded" in result.reason
     assert load_run(result.path).meta.vent_check is None or \
         load_run(result.path).meta.vent_check["verified"]
@@ -759,7 +777,8 @@ def test_an_os_error_of_the_device_is_not_called_a_recording_failure(config, tmp
     monkeypatch.setattr(SimBackend, "read", failing)
     result = acquire(config, out_root=tmp_path, notify=lambda m: None)
     assert result.status == "failed" and result.exit_code == 1
-    assert result.reason == "OSError: [Errno 5] Input/output error"
+    assert result.reason == ("the DAQ device or its driver failed (Input/output error): check "
+                             "its USB cable and power")
     run = load_run(result.path)
     assert run.meta.vent_check["verified"]
     s = run.samples  # every sample read before the failure, and the vent check's after it

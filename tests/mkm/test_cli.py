@@ -968,6 +968,13 @@ def test_check_writes_the_packaged_example_for_editing(mkm_run, tmp_path):
     assert code == 2 and err == f"mkm check: error: {edited} exists: kept as it is; name a new " \
                                 "file for the example\n"
     assert edited.read_text(encoding="utf-8") == "# my edits\n"  # nothing lost
+    # a folder not made yet ("My Bench"): was "... My Bench: no such folder", naming neither the
+    # argument nor what was expected
+    code, out, err = mkm_run(["check", "--example", str(tmp_path / "My Bench" / "b.toml")])
+    assert code == 2 and err == (f"mkm check: error: --example "
+                                 f"{str(tmp_path / 'My Bench' / 'b.toml')!r}: no such folder "
+                                 f"{str(tmp_path / 'My Bench')!r}: expected the file in an "
+                                 "existing folder (make it first)\n")
     code, out, _ = mkm_run(["check"])
     assert code == 0 and f"the packaged example {example_config()}" in out  # its path, named
 

@@ -463,6 +463,24 @@ def test_a_run_still_being_recorded_is_not_identified_and_its_export_says_so(tmp
     assert captured.err == (
         f"mkm export: note: {path.name} is still being recorded (pid {pid}): the export holds "
         "its record so far (status running); export it again once its mkm acquire has ended\n")
+    # the run folder on a share, recorded by another bench PC: its process cannot be seen from
+    # here, and identify fitted the steps so far, export said nothing
+    meta["process"].update(host="BENCH-PC-A", pid=2**22 + 7)
+    (path / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    elsewhere = (f"{path.name} may still be recorded on BENCH-PC-A (its run.json says running, "
+                 "and this PC cannot see that PC's processes)")
+    then = ("once its mkm acquire on BENCH-PC-A has ended (a run that stopped there without "
+            "closing its record is closed by the next mkm command on that bench there, such as "
+            "mkm vent on BENCH-PC-A)")
+    assert main(["identify", str(path), "--out", str(tmp_path / "id")]) == 2
+    assert capsys.readouterr().err == (
+        f"mkm identify: error: run {elsewhere}: expected a run that has ended (identify it "
+        f"{then})\n")
+    assert not (tmp_path / "id").exists()
+    assert main(["export", str(path), "--out", str(tmp_path / "run.xlsx")]) == 0
+    assert capsys.readouterr().err == (
+        f"mkm export: note: {elsewhere}: the export holds its record so far (status "
+        f"incomplete); export it again {then}\n")
 
 
 def test_demo_on_a_held_simulated_bench_is_one_line(tmp_path, capsys):

@@ -417,13 +417,23 @@ def test_a_spec_file_with_a_decimal_comma_or_saved_with_txt_says_what_it_needs(t
     assert str(caught.value) == (
         f"--spec {spec} is not valid TOML: Expected newline or end of document after a statement "
         "(at line 3, column 17); a decimal comma: TOML numbers take a point, pressure_bar = 2.5")
-    # Notepad's "spec.toml.txt", typed as Explorer shows it: was 'no such file' alone
+    # Notepad's "spec.toml.txt", typed as Explorer shows it; the words of every TOML file read
+    # (mkm.core.toml_text.read_toml_file), as a bench configuration's
     spec.rename(tmp_path / "notepad.toml.txt")
     with pytest.raises(ValueError) as caught:
         load_spec(tmp_path / "notepad.toml")
     assert str(caught.value) == (
-        f"--spec {tmp_path / 'notepad.toml'}: no such file; {tmp_path / 'notepad.toml.txt'} is "
-        "there (Notepad added .txt: rename it, or save with type 'All files')")
+        f"--spec {tmp_path / 'notepad.toml'} does not exist: expected a design spec (a TOML "
+        f"file); {tmp_path / 'notepad.toml.txt'} is there (Notepad added .txt: rename it, or "
+        "save with type 'All files')")
+    # Notepad's "ANSI" (cp1252): an accented comment was 'not valid TOML (UTF-8): 'utf-8'
+    # codec can't decode byte 0xe9 in position 9: invalid continuation byte'
+    spec.write_bytes("# pr\u00e9vu\r\n[[requirement]]\r\nforce_N = 300\r\n".encode("cp1252"))
+    with pytest.raises(ValueError) as caught:
+        load_spec(spec)
+    assert str(caught.value) == (
+        f"--spec {spec} is not UTF-8 text (byte 5 is not, as a Windows code page saves an "
+        "accented letter): save it as UTF-8 (Notepad: File, Save as, Encoding UTF-8)")
 
 
 def test_a_spec_files_requirements_typed_with_units_are_converted(tmp_path):

@@ -1489,7 +1489,7 @@ def test_the_search_model_note_gives_the_command_to_type():
         "the surrogate's box cut the test of C10 and C01, and the FE model may separate them: "
         "its change with the ratio at this optimum puts C01/C10 at 0.215 (95 % interval "
         "0.184-0.248, linearised; Silastic S's 0.905); to test it, identify again with the FE "
-        "model searching (one sweep per run and evaluation): mkm identify 'runs/latex eps0' "
+        'model searching (one sweep per run and evaluation): mkm identify "runs/latex eps0" '
         "runs/b --params theta0,rubber,friction,creep,offset --model axisym --search model")
 
 

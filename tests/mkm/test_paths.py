@@ -195,6 +195,11 @@ def test_data_copy_writes_the_shipped_table_byte_for_byte(tmp_path, monkeypatch,
                                        "folder nor a file name ending in .csv: expected one of "
                                        "them (mkm import reads the table by its suffix)\n")
     assert sorted(p.name for p in work.iterdir()) == [name]
+    # into a folder with a space: the command said was two arguments where one was meant
+    (work / "Lab Data").mkdir()
+    assert main(["data", "copy", name, "Lab Data"]) == 0
+    assert capsys.readouterr().err.startswith(
+        f'mkm data copy: note: import it with mkm import "{Path("Lab Data") / name}" --id ID ')
     (work / "sub").mkdir()
     assert main(["data", "copy", name, "sub/"]) == 0
     assert capsys.readouterr().out.strip() == str(Path("sub") / name)

@@ -24,6 +24,8 @@ def test_range_includes_its_stop_despite_round_off():
 def test_pressures_as_range_or_comma_list():
     np.testing.assert_array_equal(parse_pressures("0:1:0.5"), [0.0, 0.5, 1.0])
     np.testing.assert_array_equal(parse_pressures(" 2.5, 0 ,1"), [2.5, 0.0, 1.0])
+    # a list as German Windows writes it, its comma decimal: 'entry='5;1' is not a number'
+    np.testing.assert_array_equal(parse_pressures("0,5; 1;1,5 ;2,5"), [0.5, 1.0, 1.5, 2.5])
 
 
 def test_fraction_or_percentage_mean_the_same():
