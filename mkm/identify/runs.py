@@ -76,6 +76,9 @@ class RunData:
     #: False: the run declared no pressure accuracy, its offset bound is the default
     offset_bound_declared: bool = True
     imported: bool = False  # a table or ramp of ``mkm import``: --accuracy declares its bounds
+    #: the shipped published table (``mkm data``) the run was imported from, by its file name:
+    #: measured on another lab's bench, which no one here can stiffen or measure; None otherwise
+    published: str | None = None
     #: the monitor's declared zero error [bar] where its data sheet is itemised (``[regulator]
     #: monitor_zero_bar``; None: one accuracy, whose share at zero nobody declared)
     monitor_zero_bound_bar: float | None = None
@@ -425,11 +428,25 @@ def _instrument(run) -> dict:
            "offset_bound_declared": any(key in recorded["regulator"] for key in (
                "monitor_accuracy_bar", "monitor_components")),
            "imported": bool(run.meta.imported_from),
+           "published": _published(run),
            "force_step_N": None if run.meta.imported_from else Instrument.from_run(
                run.meta).lsb_N,
            "geometry_tolerance_mm": _tube_tolerances(getattr(run.meta.muscle, "tolerances",
                                                              None))}
     return {**out, **_declared_instrument(run)}
+
+
+def _published(run) -> str | None:
+    """The shipped published table (:func:`mkm.paths.published_tables`) whose SHA-256 the run's
+    import recorded (``imported_from.sha256``: ``mkm data copy`` copies it byte for byte), by
+    its file name; None for any other run."""
+    sha = (run.meta.imported_from or {}).get("sha256")
+    if not sha:
+        return None
+    from mkm.paths import published_tables
+
+    return next((name for name, path in published_tables().items()
+                 if file_sha256(path) == sha), None)
 
 
 def _declared_instrument(run) -> dict:
