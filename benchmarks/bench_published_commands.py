@@ -15,10 +15,11 @@ with force with the default models, without and with that identification's calib
 The benchmark's caches are a folder of its own (``MKM_CACHE_DIR``). Each command runs once
 untimed (the surrogates a user trains on first use are kept), then ``--repeats`` times as a new
 process (the ``mkm`` script of this environment), each with the prediction cache emptied first:
-a first identification or report of these runs, as a user runs it then. Prints the
-median, the fastest and the slowest, against the targets (``mkm report`` on four imported 10 mm
-runs at 6 bar <= 60 s, ``mkm identify`` on two <= 30 s), and the load average before and after
-(the machine may be shared: record on an idle one).
+a first identification or report of these runs, as a user runs it then. Prints the median,
+the fastest and the slowest wall time (with the median CPU time of the process, user and
+system: what a shared machine changes least), against the targets (``mkm report`` on four
+imported 10 mm runs at 6 bar <= 60 s, ``mkm identify`` on two <= 30 s), and the load average
+before and after (the machine may be shared: record on an idle one).
 """
 
 from __future__ import annotations
@@ -62,18 +63,26 @@ def mkm(argv, cwd: Path) -> list[str]:
     return done.stdout.splitlines()
 
 
-def timed(argv, cwd: Path, repeats: int, out_option: bool = True) -> list[float]:
-    """Wall times [s] of ``repeats`` runs of ``mkm argv`` after one untimed run, each into a
-    folder of its own (``--out``) where ``out_option``."""
-    times = []
+def _children_cpu_s() -> float:
+    """The CPU time [s] the benchmark's ended child processes used (user and system)."""
+    import resource
+
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return used.ru_utime + used.ru_stime
+
+
+def timed(argv, cwd: Path, repeats: int) -> tuple[list[float], list[float]]:
+    """Wall times and CPU times [s] of ``repeats`` runs of ``mkm argv`` after one untimed run,
+    each into a folder of its own (``--out``)."""
+    times, cpu = [], []
     for k in range(repeats + 1):
         shutil.rmtree(cwd / "cache" / "predictions", ignore_errors=True)
-        start = time.perf_counter()
-        mkm([*argv, *(["--out", f"timed-{argv[0]}-{len(argv)}-{k}"] if out_option else [])],
-            cwd)
+        start, start_cpu = time.perf_counter(), _children_cpu_s()
+        mkm([*argv, "--out", f"timed-{argv[0]}-{len(argv)}-{k}"], cwd)
         if k:
             times.append(time.perf_counter() - start)
-    return times
+            cpu.append(_children_cpu_s() - start_cpu)
+    return times, cpu
 
 
 def measure(work: Path, repeats: int) -> list[dict]:
@@ -97,16 +106,17 @@ def measure(work: Path, repeats: int) -> list[dict]:
             ["report", *pulling, "--calibration", "id/calibration.json"], TARGETS["report"])})
     rows = []
     for label, (argv, target) in commands.items():
-        times = timed(argv, work, repeats)
+        times, cpu = timed(argv, work, repeats)
         median = statistics.median(times)
         rows.append({"command": label, "median_s": round(median, 2),
                      "fastest_s": round(min(times), 2), "slowest_s": round(max(times), 2),
+                     "median_cpu_s": round(statistics.median(cpu), 2),
                      "target_s": "" if target is None else f"<= {target:g}",
                      "met": "" if target is None else ("yes" if median <= target else "no")})
         verdict = "" if target is None else (f"  target <= {target:g} s: "
                                              f"{'met' if median <= target else 'NOT met'}")
-        print(f"  {label:40s} median {median:.1f} s [{min(times):.1f}-{max(times):.1f}]"
-              f"{verdict}", flush=True)
+        print(f"  {label:40s} median {median:.1f} s [{min(times):.1f}-{max(times):.1f}], "
+              f"CPU {statistics.median(cpu):.1f} s{verdict}", flush=True)
     return rows
 
 
