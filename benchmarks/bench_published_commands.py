@@ -106,11 +106,13 @@ def measure(work: Path, repeats: int) -> list[dict]:
             ["report", *pulling, "--calibration", "id/calibration.json"], TARGETS["report"])})
     rows = []
     for label, (argv, target) in commands.items():
+        load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
         times, cpu = timed(argv, work, repeats)
         median = statistics.median(times)
         rows.append({"command": label, "median_s": round(median, 2),
                      "fastest_s": round(min(times), 2), "slowest_s": round(max(times), 2),
                      "median_cpu_s": round(statistics.median(cpu), 2),
+                     "load_average_before": None if load is None else round(load, 2),
                      "target_s": "" if target is None else f"<= {target:g}",
                      "met": "" if target is None else ("yes" if median <= target else "no")})
         verdict = "" if target is None else (f"  target <= {target:g} s: "
