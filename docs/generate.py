@@ -300,6 +300,8 @@ BENCHMARKS = {
     "batch.json": "benchmarks/bench_batch.py --json {out}",
     "startup.json": "benchmarks/bench_startup.py --json {out}",
     "published.json": "benchmarks/bench_published.py --report-timing --json {out}",
+    # whole commands, timed: record on an idle machine
+    "published_commands.json": "benchmarks/bench_published_commands.py --repeats 3 --json {out}",
     "threshold_models.json": "benchmarks/bench_threshold_models.py --out {out}",
     "threshold_fe.json": "benchmarks/bench_threshold_fe.py --out {out} --muscles "
                          "DMSP-10-250,DMSP-20-300",

@@ -114,8 +114,10 @@ class _Run:
     auto_choices: dict = field(default_factory=dict)  # tolerance -> AutoPick or None
     #: spec text -> the spec whose model answered in its place (:func:`_score`)
     in_place: dict = field(default_factory=dict)
-    #: the identify options its advice gives (:func:`_advice_options`), once read
+    #: the identify options its advice gives (:func:`_advice_options`), once read, and what
+    #: they were read from (the options asked and the run folders): runs alike share them
     advice_options: list[str] | None = None
+    advice_from: tuple | None = None
     #: what names its measurement (:func:`_measurement`), once read
     measurement: frozenset[str] | None = None
 
@@ -1111,9 +1113,13 @@ def _advice_options(r: _Run, runs: list[_Run] = ()) -> list[str]:
                   if str(o.run.path) in at_hand and o.run.path.name not in seen]
         if options and any(_advises_rest_length(o) for o in unseen):
             options = with_group(options, "L0")
-        r.advice_options = (options_for_runs(options, list(dict.fromkeys(
-            [*paths, *(str(o.run.path) for o in unseen)]))) if options and paths
-            else list(options))
+        folders = list(dict.fromkeys([*paths, *(str(o.run.path) for o in unseen)]))
+        # each run of one muscle asks the same of the same folders: read them once
+        r.advice_from = (tuple(options), frozenset(folders))
+        r.advice_options = next(
+            (o.advice_options for o in runs if o is not r and o.advice_from == r.advice_from),
+            None) or (options_for_runs(options, folders) if options and paths
+                      else list(options))
     return r.advice_options
 
 

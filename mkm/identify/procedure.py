@@ -925,6 +925,15 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
     rest_said = ("" if "L0_mm" in best.names else
                  f", where a rest length declared wrong lowers it by {rest_lowered:.3g}")
     shift = _step(best, at_top / FRAME_EPS_STEP * frame)
+    table = published_table(runs)
+    fix = ("stiffen the frame or measure its stiffness, or measure the muscle's held length "
+           "under load, and identify again" if table is None else
+           f"{table} was measured on its authors' bench, whose frame may have yielded so and "
+           "which no one here can stiffen or measure: calibration.json then predicts the "
+           "muscle together with that frame, and held at its declared length by a stiffer one "
+           "the muscle pulls more, the more the harder it pulls (the intervals hold it); ask "
+           "the table's authors for their frame's stiffness or the held lengths under load, "
+           "else predict with the intervals")
     return {"stiffness_N_per_mm": float(f"{stiffness:.3g}"),
             "yield_at_largest_force_mm": float(f"{top_N * compliance:.3g}"),
             "chi2_lowered": round(float(lowered), 3),
@@ -937,10 +946,16 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
                      f"pulls: fitting that (linearised) lowers chi2 by {lowered:.3g} (chi2/nu "
                      f"{with_frame / fitness.nu:.3g}"
                      f"{', within the noise' if within else ''}){rest_said}; the intervals "
-                     "hold the muscle fitted with it (the model-form term frame); stiffen the "
-                     "frame or measure its stiffness, or measure the muscle's held length under "
-                     "load, and identify again"),
+                     f"hold the muscle fitted with it (the model-form term frame); {fix}"),
+            **({} if table is None else {"published_table": table}),
             "shift": {n: float(v) for n, v in zip(best.names, shift, strict=True)}}
+
+
+def published_table(runs) -> str | None:
+    """The published table (``mkm data``) every run was imported from
+    (:attr:`mkm.identify.runs.RunData.published`), or None: some run was measured here."""
+    tables = {run.published for run in runs}
+    return tables.pop() if len(tables) == 1 else None
 
 
 def _fibres_column(source, runs, best, tables):

@@ -662,7 +662,14 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     # the braid is tried without the bench, so first
     braid = next((c["other_braid"]["braid"] for c in cautions
                   if c["what"] == "braid, creep or load cell gain"), None)
-    if goodness.frame:
+    if goodness.frame and goodness.frame.get("published_table"):
+        lacks = (f"a frame yielding under the muscle's pull on the bench "
+                 f"{goodness.frame['published_table']} was measured on (about "
+                 f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above)")
+        fix = ("ask the table's authors for their frame's stiffness or the held lengths under "
+               "load, else predict with the intervals, which hold the muscle fitted with it; "
+               "then ")
+    elif goodness.frame:
         lacks = (f"a frame yielding under the muscle's pull (about "
                  f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above)")
         fix = ("stiffen the frame or measure its stiffness, or measure the muscle's held length "

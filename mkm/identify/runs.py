@@ -76,6 +76,11 @@ class RunData:
     #: False: the run declared no pressure accuracy, its offset bound is the default
     offset_bound_declared: bool = True
     imported: bool = False  # a table or ramp of ``mkm import``: --accuracy declares its bounds
+    #: the SHA-256 of the file the run was imported from (``imported_from.sha256``), else None
+    table_sha256: str | None = None
+    #: the shipped published table (``mkm data``) the run was imported from, by its file name:
+    #: measured on another lab's bench, which no one here can stiffen or measure; None otherwise
+    published: str | None = None
     #: the monitor's declared zero error [bar] where its data sheet is itemised (``[regulator]
     #: monitor_zero_bar``; None: one accuracy, whose share at zero nobody declared)
     monitor_zero_bound_bar: float | None = None
@@ -425,11 +430,26 @@ def _instrument(run) -> dict:
            "offset_bound_declared": any(key in recorded["regulator"] for key in (
                "monitor_accuracy_bar", "monitor_components")),
            "imported": bool(run.meta.imported_from),
+           "table_sha256": (run.meta.imported_from or {}).get("sha256"),
+           "published": _published(run),
            "force_step_N": None if run.meta.imported_from else Instrument.from_run(
                run.meta).lsb_N,
            "geometry_tolerance_mm": _tube_tolerances(getattr(run.meta.muscle, "tolerances",
                                                              None))}
     return {**out, **_declared_instrument(run)}
+
+
+def _published(run) -> str | None:
+    """The shipped published table (:func:`mkm.paths.published_tables`) whose SHA-256 the run's
+    import recorded (``imported_from.sha256``: ``mkm data copy`` copies it byte for byte), by
+    its file name; None for any other run."""
+    sha = (run.meta.imported_from or {}).get("sha256")
+    if not sha:
+        return None
+    from mkm.paths import published_tables
+
+    return next((name for name, path in published_tables().items()
+                 if file_sha256(path) == sha), None)
 
 
 def _declared_instrument(run) -> dict:
@@ -545,16 +565,34 @@ def load_runs(paths) -> list[RunData]:
         for key in SAME_MUSCLE:
             a, b = float(first.muscle[key]), float(run.muscle[key])
             if not np.isclose(a, b, rtol=SAME_MUSCLE_RTOL, atol=0.0):
+                # a table imported twice, its tube declared apart (a guide's --t0 and
+                # another's): their folders' names differ only by the import's time
+                twice = (" (both imported from one file: keep the folders of one import)"
+                         if first.table_sha256 and first.table_sha256 == run.table_sha256
+                         else "")
                 raise ValueError(f"runs {first.name} and {run.name} are of different muscles "
                                  f"({key}={a:g} and {b:g}): expected the runs of one tube (the "
-                                 "length may differ)")
-    seen: dict[str, RunData] = {}
+                                 f"length may differ){twice}")
+    seen: dict = {}  # a measurement's key (a SHA-256, its values' hash) -> its run
     for run in runs:
         # the same table imported twice (two folders, one measurement), a copied run folder, or
         # a run and its reprocessing (the same raw samples): counted twice, it would halve the
         # intervals and predict each run from its twin
         keys = measurement_keys(run.name, run.sha256)
         twin = next((seen[k] for k in keys if k in seen), None)
+        # a table's rows imported twice and declared apart (one guide's --accuracy, another's
+        # none): their steps.csv differ in the uncertainties, not in the values (two lengths
+        # slack throughout may read alike)
+        rows = (pd.util.hash_pandas_object(run.steps[["direction", "pressure_bar_mean",
+                                                      "force_N_mean"]], index=False).sum()
+                if run.imported and not slack(run.steps) else None)
+        if twin is None and rows in seen:
+            raise ValueError(f"runs {seen[rows].name} and {run.name} hold the same measurement "
+                             "(the same pressures and forces, step by step: one table's rows "
+                             "imported twice, declared apart): expected each run once; keep the "
+                             "folders of one import")
+        if rows is not None:
+            seen[rows] = run
         if twin is not None:
             raise ValueError(f"runs {twin.name} and {run.name} hold the same measurement (their "
                              "steps.csv are identical, or one reprocesses the other's samples: "

@@ -90,6 +90,15 @@ def test_a_declared_accuracy_judges_the_fit_to_the_published_dmsp_10(tmp_path, m
                               "force=0.5N+1%,pressure=0.01bar", "--out", str(tmp_path / "runs")])
     assert code == 0, err
     paths = dict(zip([0.0, 0.064, 0.124, 0.184, 0.208], out.split(), strict=True))
+    # the import's SHA-256 names the shipped table identify's notes speak of (its frame is its
+    # authors'); a table of the lab's own (another SHA-256) is none
+    from types import SimpleNamespace
+
+    from mkm.identify.runs import _published, load_run_data
+
+    assert load_run_data(paths[0.064]).published == TABLE.name
+    assert _published(SimpleNamespace(meta=SimpleNamespace(
+        imported_from={"sha256": "0" * 64}))) is None
     fits = {}
     for name, eps in (("two", (0.064, 0.184)), ("with rest", (0.0, 0.064, 0.184))):
         code, out, err = mkm_cli(["identify", *(paths[e] for e in eps), "--model", "thickwall",

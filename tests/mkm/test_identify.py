@@ -735,6 +735,27 @@ def test_one_table_imported_twice_is_refused_not_counted_twice(tmp_path, mkm_run
                         "run and mkm reprocess's folder of it): expected each run once; leave "
                         "one of them out\n"), err
     assert not (tmp_path / "id").exists()
+    # imported again with an accuracy (published.md's DMSP-20-300 without one, design.md's
+    # with): its steps.csv differ in the uncertainties, and the 2 measurements were fitted as 4
+    # runs; with another wall (published.md's DMSP-10-250 at 1.5 mm, design.md's at 1.8) the
+    # tubes differ, and nothing said the two were one file's imports
+    for declared in (["--t0", "3", "--accuracy", "force=1N+1%"], ["--t0", "2.5"]):
+        code, out, err = mkm_run(["import", str(table), "--id", "lab", "--D0", "30", *declared,
+                                  "--L0", "282", "--eps", "0", "--out", str(tmp_path / "again")])
+        assert code == 0, err
+        again = out.strip()
+        code, out, err = mkm_run(["identify", str(runs[0]), again, "--params", "theta0",
+                                  "--model", "thickwall", "--search", "model", "--out",
+                                  str(tmp_path / "id")])
+        assert code == 2 and out == "" and not (tmp_path / "id").exists()
+        said = (f"mkm identify: error: runs {runs[0].name} and {Path(again).name} ")
+        assert err.endswith(said + (
+            "hold the same measurement (the same pressures and forces, step by step: one "
+            "table's rows imported twice, declared apart): expected each run once; keep the "
+            "folders of one import\n" if "--accuracy" in declared else
+            "are of different muscles (t0_mm=3 and 2.5): expected the runs of one tube (the "
+            "length may differ) (both imported from one file: keep the folders of one "
+            "import)\n")), err
 
 
 def test_a_run_and_its_reprocessing_are_refused_not_counted_twice(one_run, tmp_path, mkm_run):
