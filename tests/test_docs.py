@@ -3092,6 +3092,14 @@ def test_the_design_pages_identified_band_against_its_draws_is_its_measured_file
     text = " ".join((DOCS / "guide" / "design.md").read_text(encoding="utf-8").split())
     pulling = [row for row in rows if row["force_N"] > 0]
     slack = [row for row in rows if row["force_N"] == 0]
+    # the band's probability at each share of it asked, and the draws' sampling error at 50 %
+    (stated,) = {tuple(v["band"] for v in row["held_pct"].values()) for row in pulling}
+    said = [f"{v if v > 97 else round(v):g}" for v in stated]
+    draws = {row["draws"] for row in rows}
+    assert draws == {200} and (f"(50, 69, 84 and 97.5 %) is the draws' share within their "
+                               "sampling error (twice its standard error: "
+                               f"{200 * np.sqrt(0.25 / 200):.1f} points at 50 %)") in text
+    assert said == ["50", "69", "84", "97.5"]
     final = [row.get("again", row) for row in pulling]  # a case the draws flagged, drawn again
     within = sum(f["band_over_draws"] <= 1 for f in final)
     worst = max(f["band_over_draws"] for f in final)
