@@ -1463,6 +1463,9 @@ def test_a_design_with_an_identified_muscle_states_its_forces_with_their_band(tm
         assert float(force) == pytest.approx(best[f"r{k}_fe_N"], rel=5e-4)
         assert float(margin) == pytest.approx(best[f"r{k}_fe_margin_N"], rel=5e-3)
         assert float(chance) == pytest.approx(min(100 * held[k - 1], 99.9), abs=0.5)
+    # design.md quotes these words
+    assert ("r1 (300N@2bar,eps=0.1) pulls 653.4-709.0 N (681.2 N at the calibration's values, "
+            "met by 381 N)") in note
     assert note.endswith(f"; the load cell and the frame must take {ranges[0][1]:.1f} N at "
                          "these requirements (r1's upper end); every requirement holds with 95 "
                          "% or more")
