@@ -3131,6 +3131,32 @@ def test_the_design_pages_identified_band_against_its_draws_is_its_measured_file
             f"the draws' {slack[0]['high_N']:.1f} and {slack[1]['high_N']:.1f} N") in text
 
 
+def test_the_design_pages_band_on_fresh_points_is_its_measured_file():
+    """design.md says how often the band ``mkm design`` states, both ends, held the true
+    muscle's force on fresh random points, and the linearised band alone: held to
+    ``bench_design_band_fresh.py``'s file, written by the command beside the words."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "design_band_fresh.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "design.md").read_text(encoding="utf-8").split())
+    summary, rows = record["summary"], record["rows"]
+    band, linear = summary["band"], summary["linear"]
+    assert summary["points"] == len(rows) == record["points"]
+    assert summary["judged"] == sum("side" in r for r in rows) == sum(band.values())
+    judged = summary["judged"]
+    assert (f"--points {record['points']} --seed {record['seed']} --out "
+            "docs/measured/design_band_fresh.json") in text
+    assert (f"the true force lay inside the band at {band['inside']} of {judged} points "
+            f"({summary['inside_pct']:.1f} %, 95 % stated, the sampling error "
+            f"{summary['sampling_error_pct']:.1f} points), below it at {band['below']} and "
+            f"above it at {band['above']}") in text
+    assert (f"the linearised band alone (its lower end on both sides) held "
+            f"{summary['linear_inside_pct']:.1f} %, {linear['above']} true forces above it") in text
+    assert (f"{summary['skipped']} points skipped" if summary["skipped"] else
+            "no point skipped") in text
+
+
 def test_the_bench_pages_over_force_ceiling_on_drawn_muscles_is_its_measured_file():
     """bench.md's counts of sound and faulty runs watched by the over-force ceiling are those
     of ``bench_overforce_band.py``'s file, written by the command beside them."""
