@@ -3147,6 +3147,8 @@ def test_the_design_pages_band_on_fresh_points_is_its_measured_file():
     judged = summary["judged"]
     assert (f"--points {record['points']} --seed {record['seed']} --out "
             "docs/measured/design_band_fresh.json") in text
+    # "at the rate it states, within its sampling error"
+    assert abs(summary["inside_pct"] - 95.0) <= summary["sampling_error_pct"]
     assert (f"the true force lay inside the band at {band['inside']} of {judged} points "
             f"({summary['inside_pct']:.1f} %, 95 % stated, the sampling error "
             f"{summary['sampling_error_pct']:.1f} points), below it at {band['below']} and "
