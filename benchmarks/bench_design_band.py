@@ -94,16 +94,18 @@ CASES = [
 
 
 def calibration_of(muscle: dict, folder: Path) -> Calibration:
-    """A calibration as ``mkm identify`` writes one: the FE model's entry with its band."""
+    """A calibration as ``mkm identify`` writes one: the FE model's entry with its band (the
+    two parameters correlated by ``muscle["rho"]``, 0 where it has none)."""
     scale = muscle["rubber_scale"]
+    shared = muscle.get("rho", 0.0) * muscle["sd_theta0"] * muscle["sd_rubber"]
     path = folder / "calibration.json"
     path.write_text(json.dumps({"axisym": {
         "theta0_deg": muscle["theta0_deg"], "C10_MPa": scale * SILASTIC_S.C10_MPa,
         "C01_MPa": scale * SILASTIC_S.C01_MPa,
         "identified": {"band": {"parameters": ["theta0_deg", "rubber_scale"],
                                 "values": [muscle["theta0_deg"], scale],
-                                "covariance": [[muscle["sd_theta0"] ** 2, 0.0],
-                                               [0.0, muscle["sd_rubber"] ** 2]],
+                                "covariance": [[muscle["sd_theta0"] ** 2, shared],
+                                               [shared, muscle["sd_rubber"] ** 2]],
                                 "sensitivity_tolerance": 0.0}}}}), encoding="utf-8")
     return Calibration.load(path)
 

@@ -432,6 +432,8 @@ QUOTED_RUNS = {
                                "0,1,2,3,4,5,6,7,8,18 --out {out}",
     "design_band_tight_wide.json": "benchmarks/bench_design_band.py --cases "
                                    "9,10,11,12,13,14,15,16,17,19 --out {out}",
+    "design_band_fresh.json": "benchmarks/bench_design_band_fresh.py --points 500 --seed "
+                              "2026120741 --out {out}",
     "overforce_band.json": "benchmarks/bench_overforce_band.py --draws 12 --out {out}",
     "surrogate_range_decline.json": "benchmarks/bench_surrogate_decline.py --seeds 20261225 "
                                     "20261228 20261701 20261702 20261703 20261704 20261705 "

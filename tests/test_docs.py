@@ -3092,6 +3092,14 @@ def test_the_design_pages_identified_band_against_its_draws_is_its_measured_file
     text = " ".join((DOCS / "guide" / "design.md").read_text(encoding="utf-8").split())
     pulling = [row for row in rows if row["force_N"] > 0]
     slack = [row for row in rows if row["force_N"] == 0]
+    # the band's probability at each share of it asked, and the draws' sampling error at 50 %
+    (stated,) = {tuple(v["band"] for v in row["held_pct"].values()) for row in pulling}
+    said = [f"{v if v > 97 else round(v):g}" for v in stated]
+    draws = {row["draws"] for row in rows}
+    assert draws == {200} and (f"(50, 69, 84 and 97.5 %) is the draws' share within their "
+                               "sampling error (twice its standard error: "
+                               f"{200 * np.sqrt(0.25 / 200):.1f} points at 50 %)") in text
+    assert said == ["50", "69", "84", "97.5"]
     final = [row.get("again", row) for row in pulling]  # a case the draws flagged, drawn again
     within = sum(f["band_over_draws"] <= 1 for f in final)
     worst = max(f["band_over_draws"] for f in final)
@@ -3121,6 +3129,34 @@ def test_the_design_pages_identified_band_against_its_draws_is_its_measured_file
     assert ("where the muscle and its linearised band are 0 N, it states "
             f"{slack[0]['band95_above_N']:.1f} and {slack[1]['band95_above_N']:.1f} N against "
             f"the draws' {slack[0]['high_N']:.1f} and {slack[1]['high_N']:.1f} N") in text
+
+
+def test_the_design_pages_band_on_fresh_points_is_its_measured_file():
+    """design.md says how often the band ``mkm design`` states, both ends, held the true
+    muscle's force on fresh random points, and the linearised band alone: held to
+    ``bench_design_band_fresh.py``'s file, written by the command beside the words."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "design_band_fresh.json").read_text(
+        encoding="utf-8"))
+    text = " ".join((DOCS / "guide" / "design.md").read_text(encoding="utf-8").split())
+    summary, rows = record["summary"], record["rows"]
+    band, linear = summary["band"], summary["linear"]
+    assert summary["points"] == len(rows) == record["points"]
+    assert summary["judged"] == sum("side" in r for r in rows) == sum(band.values())
+    judged = summary["judged"]
+    assert (f"--points {record['points']} --seed {record['seed']} --out "
+            "docs/measured/design_band_fresh.json") in text
+    # "at the rate it states, within its sampling error"
+    assert abs(summary["inside_pct"] - 95.0) <= summary["sampling_error_pct"]
+    assert (f"the true force lay inside the band at {band['inside']} of {judged} points "
+            f"({summary['inside_pct']:.1f} %, 95 % stated, the sampling error "
+            f"{summary['sampling_error_pct']:.1f} points), below it at {band['below']} and "
+            f"above it at {band['above']}") in text
+    assert (f"the linearised band alone (its lower end on both sides) held "
+            f"{summary['linear_inside_pct']:.1f} %, {linear['above']} true forces above it") in text
+    assert (f"{summary['skipped']} points skipped" if summary["skipped"] else
+            "no point skipped") in text
 
 
 def test_the_bench_pages_over_force_ceiling_on_drawn_muscles_is_its_measured_file():

@@ -64,25 +64,16 @@ def steeper_braid_N(row, requirements, calibration: Calibration | None,
     return out
 
 
-def identified_band_N(row, requirements, calibration: Calibration | None,
-                      gap_mm: float = 0.0, cache_dir=None) -> list[float | None]:
-    """Per requirement, the 95 % half-width [N] of design ``row``'s FE force that the
-    identified muscle's own uncertainty gives (:func:`mkm.identify.band.prediction_band`: the
-    intervals ``mkm identify`` wrote into ``calibration``, carried through the FE model at the
-    design's geometry, its solves kept in the prediction cache ``cache_dir``); None where the
-    calibration holds no identified FE muscle, or the design takes another braid angle or
-    rubber than the identified one, or a gap."""
-    from mkm.identify.band import prediction_band
-
-    return [None if band is None else float(np.ravel(band)[0]) for band in _identified(
-        prediction_band, row, requirements, calibration, gap_mm, cache_dir)]
-
-
 def identified_ends_N(row, requirements, calibration: Calibration | None,
                       gap_mm: float = 0.0, cache_dir=None) -> list[tuple[float, float] | None]:
-    """Per requirement, how far [N] the band of :func:`identified_band_N` reaches below and
-    above design ``row``'s FE force (:func:`mkm.identify.band.prediction_ends`: above it,
-    farther where the force is not linear in the parameters); None where that gives None."""
+    """Per requirement, how far [N] the 95 % band of design ``row``'s FE force that the
+    identified muscle's own uncertainty gives reaches below and above it
+    (:func:`mkm.identify.band.prediction_ends`: the intervals ``mkm identify`` wrote into
+    ``calibration``, carried through the FE model at the design's geometry, its solves kept in
+    the prediction cache ``cache_dir``; below it the linearisation, above it farther where the
+    force is not linear in the parameters); None where the calibration holds no identified FE
+    muscle, or the design takes another braid angle or rubber than the identified one, or a
+    gap."""
     from mkm.identify.band import prediction_ends
 
     return [None if ends is None else (float(np.ravel(ends[0])[0]), float(np.ravel(ends[1])[0]))

@@ -138,6 +138,12 @@ COLUMN_DOCS = {
     "r<k>_surrogate_N": "surrogate force at requirement k [N]",
     "r<k>_uncertainty_N": "margin the surrogate force had to clear [N]",
     "r<k>_fe_N": "FE force at requirement k [N] (empty: not converged)",
+    "r<k>_fe_low95_N": "with --calibration of an identified muscle, the chosen design's 95 % "
+                       "band at requirement k: the least a muscle of the identified "
+                       "uncertainty pulls [N] (empty for the other designs: the band is solved "
+                       "for the chosen one alone)",
+    "r<k>_fe_high95_N": "the same band's upper end: the most a muscle of the identified "
+                        "uncertainty pulls [N], what the load cell and the frame must take",
     "r<k>_fe_margin_N": "FE force minus the required force [N]",
     "r<k>_fe_margin_pct": "FE margin over the required force [%]",
     "r<k>_threshold_bar": "FE threshold pressure of requirement k's eps [bar]",

@@ -28,7 +28,7 @@ from mkm.design.box_search import (
 )
 from mkm.design.fe_verification import (
     BUILT_ANGLE_TOLERANCE_DEG,
-    identified_band_N,
+    identified_ends_N,
     ordered,
     steeper_braid_N,
     verify,
@@ -74,10 +74,14 @@ class DesignResult:
     files: dict = field(default_factory=dict)
     #: the probability a robust design is asked to meet every requirement with (None: nominal)
     probability: float | None = None
-    #: per requirement, the chosen design's FE force's 95 % half-width [N] from the identified
-    #: muscle's own uncertainty (:func:`~mkm.design.fe_verification.identified_band_N`; None
-    #: where the calibration identified none, or a robust design, which carries its own)
+    #: per requirement, how far [N] the 95 % band of the chosen design's FE force from the
+    #: identified muscle's own uncertainty reaches below it, the linearisation the probability
+    #: takes (:func:`~mkm.design.fe_verification.identified_ends_N`; None where the calibration
+    #: identified none, or a robust design, which carries its own)
     identified_band_N: list = field(default_factory=list)
+    #: per requirement, how far [N] that band reaches above the force: the most a muscle of the
+    #: identified parameters' 95 % ellipse pulls there, less the force (None as above)
+    identified_above_N: list = field(default_factory=list)
     #: the ``--tolerance`` that carries the identified muscle's 95 % intervals ("" without)
     identified_tolerance: str = ""
     #: per requirement, the chosen design's FE force with its braid
@@ -134,7 +138,8 @@ class DesignResult:
         verified holds it), one whose worst corner the FE did not solve, the chosen design's
         forces with the identified muscle's own uncertainty, the probability each holds
         (:meth:`identified_probability`) and the ``--tolerance`` where one is below the
-        default probability, and a chosen tube of the identified rubber other than the
+        default probability, the most a muscle of that band pulls (what the load cell and
+        the frame must take), and a chosen tube of the identified rubber other than the
         identified muscle's (:func:`_another_tube`), or, where no identified
         muscle says, by less than a braid 1 deg steeper takes away (:attr:`steeper_braid_N`).
         Empty when none."""
@@ -213,18 +218,34 @@ class DesignResult:
             k: held_with(float(best[f"r{k}_fe_margin_N"]), band)
             for k, band in enumerate(self.identified_band_N, start=1) if band is not None}
 
+    def identified_range_N(self) -> dict[int, tuple[float, float]]:
+        """Per requirement ``k`` with an identified band, the forces [N] its 95 % band spans
+        at the chosen design: from the FE force less :attr:`identified_band_N` (no muscle
+        pulls less than nothing) to the FE force plus :attr:`identified_above_N`; empty
+        without a band or a chosen design."""
+        best = self.chosen
+        return {} if best is None else {
+            k: (max(0.0, float(best[f"r{k}_fe_N"]) - below),
+                float(best[f"r{k}_fe_N"]) + self.identified_above_N[k - 1])
+            for k, below in enumerate(self.identified_band_N, start=1) if below is not None}
+
     def _band_note(self, best, held: dict[int, float]) -> str:
-        """The chosen design's FE force at each requirement with the identified muscle's band,
-        the probability it holds, and what to do where one is below
-        :data:`~mkm.design.spec.DEFAULT_PROBABILITY`."""
+        """The forces the chosen design pulls at each requirement within the identified
+        muscle's band, its FE force and margin, the probability it holds, the most any
+        requirement's band reaches (what the load cell and the frame must take), and what to do
+        where one is below :data:`~mkm.design.spec.DEFAULT_PROBABILITY`."""
         target = 100 * DEFAULT_PROBABILITY
+        ranges = self.identified_range_N()
         forces = "; ".join(
-            f"r{k} ({self.search.requirements[k - 1].label}) {float(best[f'r{k}_fe_N']):.4g} "
-            f"+- {self.identified_band_N[k - 1]:.3g} N, met by "
-            f"{float(best[f'r{k}_fe_margin_N']):.3g} N: {_chance(p)}" for k, p in held.items())
-        text = (f"the chosen design's FE forces at the calibration's values, with the identified "
-                f"muscle's own uncertainty (95 %, its intervals carried through the FE model): "
-                f"{forces}")
+            f"r{k} ({self.search.requirements[k - 1].label}) pulls {ranges[k][0]:.1f}-"
+            f"{ranges[k][1]:.1f} N ({float(best[f'r{k}_fe_N']):.4g} N at the calibration's "
+            f"values, met by {float(best[f'r{k}_fe_margin_N']):.3g} N): {_chance(p)}"
+            for k, p in held.items())
+        most = max(ranges, key=lambda k: ranges[k][1])
+        text = (f"the chosen design's forces with the identified muscle's own uncertainty (95 %, "
+                f"its intervals carried through the FE model): {forces}; the load cell and the "
+                f"frame must take {ranges[most][1]:.1f} N at these requirements (r{most}'s upper "
+                "end)")
         short = [f"r{k}" for k, p in held.items() if p < DEFAULT_PROBABILITY]
         if not short:
             return text + f"; every requirement holds with {target:g} % or more"
@@ -318,9 +339,10 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
             f"r{k}_fe_worst_corner_N")] + ["probability_all"]
     designs = ordered(designs, objective, demoted)
     ok = designs[designs["meets_all"]]
-    band = ([] if tolerances is not None or ok.empty else
-            identified_band_N(ok.iloc[0], found.requirements, calibration, found.gap_mm,
+    ends = ([] if tolerances is not None or ok.empty else
+            identified_ends_N(ok.iloc[0], found.requirements, calibration, found.gap_mm,
                               cache_dir))
+    band = [None if e is None else e[0] for e in ends]
     # how sure a nominal margin is where no identification says: the braid angle built
     steeper = ([] if tolerances is not None or ok.empty or any(b is not None for b in band)
                else steeper_braid_N(ok.iloc[0], found.requirements, calibration,
@@ -330,11 +352,19 @@ def run_design(requirements=(), constraints=None, objective=None, top=None, spec
         f"r{k}_surrogate_N", f"r{k}_uncertainty_N", f"r{k}_fe_N", f"r{k}_fe_margin_N",
         f"r{k}_fe_margin_pct", f"r{k}_threshold_bar", f"r{k}_meets")] + robust + [
         "meets_all", "min_fe_margin_pct", "fe_mesh", "flags", "fe_failure"]
-    return DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits,
-                        probability=None if tolerances is None else probability,
-                        identified_band_N=band,
-                        identified_tolerance=identified_tolerance(calibration),
-                        steeper_braid_N=steeper)
+    result = DesignResult(designs[columns], curves, found, mesh, seconds, fe_models, hits,
+                          probability=None if tolerances is None else probability,
+                          identified_band_N=band,
+                          identified_above_N=[None if e is None else e[1] for e in ends],
+                          identified_tolerance=identified_tolerance(calibration),
+                          steeper_braid_N=steeper)
+    # the band's ends, solved for the chosen design alone: the other designs' are empty
+    table = result.designs
+    for k, span in result.identified_range_N().items():
+        for column, value in zip((f"r{k}_fe_low95_N", f"r{k}_fe_high95_N"), span, strict=True):
+            table.insert(table.columns.get_loc(f"r{k}_fe_margin_N"), column,
+                         np.where(table.index == result.chosen.name, value, np.nan))
+    return result
 
 
 def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *,
@@ -371,7 +401,9 @@ def design(requirements, constraints=None, objective: str = DEFAULT_OBJECTIVE, *
         One row per verified design: geometry, outer diameter at the working pressure [mm],
         rubber volume [cm^3], per requirement ``k`` the surrogate's force and uncertainty and the
         FE force, margin [N, %], threshold pressure [bar] and verdict ``r<k>_meets``;
-        ``meets_all`` (the FE's verdict), ``flags``. Sorted: designs the FE confirms first, in
+        ``meets_all`` (the FE's verdict), ``flags``; with an identified muscle's
+        ``calibration``, the chosen design's 95 % band at each requirement,
+        ``r<k>_fe_low95_N`` to ``r<k>_fe_high95_N``. Sorted: designs the FE confirms first, in
         objective order. ``attrs`` holds the requirements, constraints and search summary.
     """
     result = run_design(requirements, constraints, objective, top, mesh=mesh,
@@ -477,6 +509,7 @@ def _resolution(s) -> dict:
 def design_record(result: DesignResult) -> dict:
     """What ``designs.json`` records besides provenance (also the ``attrs`` of :func:`design`)."""
     s = result.search
+    ranges = result.identified_range_N()
     return {"requirements": [asdict(r) | {"label": f"r{k}: {r.label}"}
                              for k, r in enumerate(s.requirements, start=1)],
             "constraints": s.constraints, "objective": s.objective,
@@ -506,7 +539,12 @@ def design_record(result: DesignResult) -> dict:
                                    else s.edges(result.chosen)),
             # the lines the command prints besides its summary (the box, the edge)
             "notes": result.notes(),
+            # per requirement, how far the chosen design's 95 % band reaches below and above
+            # its FE force, and the forces it spans (null: none)
             "identified_band_N": result.identified_band_N,
+            "identified_band_above_N": result.identified_above_N,
+            "identified_range_N": [list(ranges[k]) if k in ranges else None for k in
+                                   range(1, len(result.identified_band_N) + 1)],
             # per requirement, the chance the chosen design meets it by that band (null: none)
             "identified_probability": [result.identified_probability().get(k) for k in
                                        range(1, len(result.identified_band_N) + 1)],

@@ -1382,7 +1382,7 @@ def _band(covariance) -> dict:
 def test_the_identified_muscles_uncertainty_is_carried_to_the_chosen_designs_force(tmp_path):
     # 0.2 deg and 3 % (one sd): the FE's force of a design at 2 bar moves by the derivatives
     # times them, 1.96 sd of the sum is the band; the tolerance text is 1.96 sd of each
-    from mkm.design.fe_verification import fe_model, identified_band_N
+    from mkm.design.fe_verification import fe_model, identified_ends_N
     from mkm.design.result import held_with, identified_tolerance
     from mkm.identify.band import Z95
 
@@ -1393,7 +1393,7 @@ def test_the_identified_muscles_uncertainty_is_carried_to_the_chosen_designs_for
     F = float(model.predict(2.0, 40.0, 3.0, 0.1).force_N)
     row = {"D0_mm": 40.0, "t0_mm": 3.0, "L0_mm": 250.0, "theta0_deg": 32.0,
            "rubber": "calibrated", "fe_mesh": "coarse", "r1_fe_N": F}
-    (band,) = identified_band_N(row, req, calibration)
+    ((band, above),) = identified_ends_N(row, req, calibration)
     steps = {}
     for name, d in (("theta0_deg", 0.01), ("rubber", 1e-3)):
         moved = fe_model("coarse", 250.0, 32.0 + (d if name == "theta0_deg" else 0.0),
@@ -1407,10 +1407,11 @@ def test_the_identified_muscles_uncertainty_is_carried_to_the_chosen_designs_for
                                C01_MPa=(1 + d) * SILASTIC_S.C01_MPa)
         steps[name] = (float(moved.predict(2.0, 40.0, 3.0, 0.1).force_N) - F) / d
     expected = Z95 * np.hypot(0.2 * steps["theta0_deg"], 0.03 * steps["rubber"])
-    assert band == pytest.approx(expected, rel=0.02)
+    # away from the threshold and the lock the force is linear within 2 % of the band
+    assert band == pytest.approx(expected, rel=0.02) and above == band
     # another angle or rubber than the identified one: the band is not the design's
-    assert identified_band_N({**row, "theta0_deg": 30.0}, req, calibration) == [None]
-    assert identified_band_N({**row, "rubber": "silastic_s"}, req, calibration) == [None]
+    assert identified_ends_N({**row, "theta0_deg": 30.0}, req, calibration) == [None]
+    assert identified_ends_N({**row, "rubber": "silastic_s"}, req, calibration) == [None]
     # the probability of a margin: half at none, 95 % at 1.645 sd, 97.5 % at the band
     assert held_with(0.0, band) == pytest.approx(0.5)
     assert held_with(band * 1.6449 / Z95, band) == pytest.approx(0.95, abs=1e-4)
@@ -1442,28 +1443,53 @@ def test_a_design_with_an_identified_muscle_states_its_forces_with_their_band(tm
     less than 95 % (the robust search, --tolerance, 1m48s against 33 s): the chosen design's
     FE force at each requirement is stated with the band, the probability it holds and, every
     one holding, that no --tolerance is needed: a 40 x 3 mm tube of a muscle identified to
-    0.2 deg and 3 % (one sd), asked for about half its force."""
+    0.2 deg and 3 % (one sd), asked for about half its force. The band is said by both ends
+    (it gave `+-` its lower end alone), and the most it reaches, what the load cell and the
+    frame must take, in the note, designs.csv and designs.json."""
+    from mkm.design.fe_verification import identified_ends_N
+    from mkm.design.page import write_design
     from mkm.design.result import held_with
 
     reqs = ["300N@2bar,eps=0.1", "100N@2bar,eps=0.2"]
+    calibration = _identified(tmp_path)
     result = run_design(reqs, {"D0_mm": 40.0, "t0_mm": 3.0}, top=1, mesh=MESH,
-                        calibration=_identified(tmp_path), cache_dir=None)
+                        calibration=calibration, cache_dir=None)
     best = result.chosen
-    bands = result.identified_band_N
-    held = [held_with(float(best[f"r{k}_fe_margin_N"]), band)
-            for k, band in enumerate(bands, start=1)]
+    ends = identified_ends_N(best, [parse_requirement(r) for r in reqs], calibration)
+    assert result.identified_band_N == [below for below, _ in ends]
+    assert result.identified_above_N == [above for _, above in ends]
+    held = [held_with(float(best[f"r{k}_fe_margin_N"]), below)
+            for k, (below, _) in enumerate(ends, start=1)]
     assert min(held) >= 0.95 and result.steeper_braid_N == []
+    ranges = [(float(best[f"r{k}_fe_N"]) - below, float(best[f"r{k}_fe_N"]) + above)
+              for k, (below, above) in enumerate(ends, start=1)]
     (note,) = [n for n in result.notes() if "the identified muscle's own uncertainty" in n]
-    stated = re.findall(r"r(\d) \(([^)]+)\) ([\d.]+) \+- ([\d.]+) N, met by ([-\d.]+) N: "
-                        r"holds with (?:about|over) ([\d.]+) %", note)
+    stated = re.findall(r"r(\d) \(([^)]+)\) pulls ([\d.]+)-([\d.]+) N \(([\d.]+) N at the "
+                        r"calibration's values, met by ([-\d.]+) N\): holds with (?:about|over) "
+                        r"([\d.]+) %", note)
     assert [(k, label) for k, label, *_ in stated] == [("1", reqs[0]), ("2", reqs[1])]
-    for k, (_, _, force, band, margin, chance) in enumerate(stated, start=1):
+    for k, (_, _, low, high, force, margin, chance) in enumerate(stated, start=1):
+        assert (float(low), float(high)) == pytest.approx(ranges[k - 1], abs=0.05)
         assert float(force) == pytest.approx(best[f"r{k}_fe_N"], rel=5e-4)
-        assert float(band) == pytest.approx(bands[k - 1], rel=5e-3)
         assert float(margin) == pytest.approx(best[f"r{k}_fe_margin_N"], rel=5e-3)
         assert float(chance) == pytest.approx(min(100 * held[k - 1], 99.9), abs=0.5)
-    assert note.endswith("; every requirement holds with 95 % or more")
-    assert design_record(result)["identified_probability"] == pytest.approx(held)
+    # design.md quotes these words
+    assert ("r1 (300N@2bar,eps=0.1) pulls 653.4-709.0 N (681.2 N at the calibration's values, "
+            "met by 381 N)") in note
+    assert note.endswith(f"; the load cell and the frame must take {ranges[0][1]:.1f} N at "
+                         "these requirements (r1's upper end); every requirement holds with 95 "
+                         "% or more")
+    write_design(result, tmp_path / "design")
+    record = json.loads((tmp_path / "design" / "designs.json").read_text(encoding="utf-8"))
+    assert record["identified_probability"] == pytest.approx(held)
+    assert [tuple(r) for r in record["identified_range_N"]] == [
+        pytest.approx(r, rel=1e-9) for r in ranges]
+    assert note in record["notes"]
+    table = pd.read_csv(tmp_path / "design" / "designs.csv")
+    for k, (low, high) in enumerate(ranges, start=1):
+        assert (table.loc[0, f"r{k}_fe_low95_N"], table.loc[0, f"r{k}_fe_high95_N"]) == (
+            pytest.approx(low, rel=1e-5), pytest.approx(high, rel=1e-5))
+    assert "r<k>_fe_high95_N" in record["columns"]
 
 
 def test_a_probability_near_one_is_not_rounded_to_certainty():
