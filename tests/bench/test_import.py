@@ -931,6 +931,74 @@ def test_a_load_cell_zeroed_again_mid_record_is_tared_at_each_zero(tmp_path, mkm
             1 / np.sqrt(hold.n) + 1 / np.sqrt(50))), hold
 
 
+@pytest.mark.parametrize("logged", ["without its time", "through a 5-reading average"])
+def test_a_load_cell_zeroed_again_without_times_or_smeared_is_tared_at_each_zero(logged,
+                                                                               tmp_path,
+                                                                               mkm_cli):
+    # the tare pressed at 25 s with the muscle held at 2 bar, as above. Logged without its time
+    # column the falling steps were 817 N low without a word; through a display's average of 5
+    # readings (the step a line over 0.5 s) it was told a drift, every step keeping the start's
+    # zero and --tare linear offered
+    t, p, f, truth = _staircase_10_hz([1.0, 2.0, 2.5, 2.0, 1.0, 0.0], tare_N=3.0)
+    pull_N = float(np.mean(truth[(t >= 24.0) & (t < 25.0)]))
+    timed = logged != "without its time"
+    # a moving average of 5 readings: the new zero's share 1/5 at 25.1 s ... 5/5 at 25.5 s
+    share = np.clip((t - 25.0) / 0.5, 0.0, 1.0) if timed else (t >= 25.0)
+    path = tmp_path / "rezeroed.csv"
+    pd.DataFrame({"Time [s]": t, "P [bar]": p, "F [N]": f - (3.0 + pull_N) * share}).drop(
+        columns=[] if timed else ["Time [s]"]).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    step = run.meta.imported_from["zero_step"]
+    assert step["step_N"] == pytest.approx(-3.0 - pull_N, abs=4 * 0.16)  # as above
+    if timed:
+        # the readings at 25.1-25.4 s part way, file rows 253-256; from 25.5 s (C257) the new
+        # zero
+        assert step["at_s"] == pytest.approx(25.5) and step["cell"] == "C257"
+        assert step["spread_samples"] == 4
+        assert ("at 2 bar, as far as the force vented at the end reads from the zero at the "
+                "start: the load cell zeroed again there") in err
+        assert ("over 0.5 s from 25 s to 25.5 s (cells C253 to C257) while the pressure holds "
+                "at 2 bar") in err and "the 4 sample(s) between read it part way" in err
+    else:
+        assert "at_s" not in step and step["cell"] == "B252" and step["spread_samples"] == 0
+        assert (f"the force steps by {step['step_N']:+.4g} N at cell B252 while the pressure "
+                "holds at 2 bar") in err, err
+    assert "--tare linear" not in err
+    # every step its muscle's force, within 4 standard errors of its mean and the rest's
+    # (0.2 N noise; a record without time averages each plateau's second half) and the 0.2 N a
+    # hold's edge takes in
+    assert len(run.steps) == 5
+    holds = [(t >= 6.0) & (t < 18.0), (t >= 19.0) & (t < 31.0), (t >= 32.0) & (t < 44.0),
+             (t >= 45.0) & (t < 57.0), (t >= 58.0) & (t < 70.0)]
+    for hold, inside in zip(run.steps.itertuples(), holds, strict=True):
+        assert hold.force_N_mean == pytest.approx(truth[inside][-hold.n:].mean(), abs=0.2 + 4 * (
+            0.2 / np.sqrt(hold.n) + 0.2 / np.sqrt(49))), hold
+
+
+@pytest.mark.parametrize("row", [2, 5, 7, 9])
+def test_a_step_table_whose_load_cell_was_zeroed_again_at_a_row_is_tared_at_each_zero(
+        row, tmp_path, mkm_cli):
+    # a table of one row per held pressure whose cell was tared again at a hold before its row
+    # was written (the row reads 0 N, every row after it the pull there low): it was told a
+    # drift of the closing 0 bar row, every falling step up to 1049 N low
+    pressures = np.array([0, 0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.5, 1.0, 0.5, 0])
+    force = thickwall_N(pressures, 0.0) * np.r_[1, 1, 1, 1, 1, 1, 1.04, 1.04, 1.04, 1.04, 1]
+    logged = force + 3.0 - np.where(np.arange(11) >= row, force[row] + 3.0, 0.0)
+    path = tmp_path / "steps.csv"
+    pd.DataFrame({"Druck [bar]": pressures, "Kraft [N]": logged.round(2)}).to_csv(
+        path, sep=";", decimal=",", index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    cell = f"B{row + 2}"
+    assert run.meta.imported_from["zero_step"] == {
+        "cell": cell, "step_N": pytest.approx(-force[row] - 3.0, abs=0.01),
+        "pressure_bar": pressures[row]}
+    assert (f"and with the rows from {cell} ({pressures[row]:g} bar) on tared at theirs every "
+            "force follows its pressure from row to row, the least up and down of any row's: the "
+            "load cell zeroed again there") in err, err
+    # every row its muscle's force, to the file's 0.01 N
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, atol=0.01)
+
+
 @pytest.mark.parametrize("closing_N, accuracy, said", [
     (0.8, [], True), (0.3, [], False), (-0.8, [], True),
     (0.8, ["--accuracy", "force=0.5N+1%"], False),  # within twice the declared 0.5 N
