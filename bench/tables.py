@@ -260,6 +260,9 @@ class RawTable:
     properties: dict = field(default_factory=dict)
     #: what the reader warned of while reading a damaged file (npTDMS: a segment cut short)
     read_warnings: list[str] = field(default_factory=list)
+    #: a LabVIEW measurement file's segments that timed its rows (:func:`_lvm_times`): how
+    #: many, what told their starts, their Delta_X as written, the time between them unlogged
+    lvm_segments: dict = field(default_factory=dict)
     #: each row's file where several files were joined into this table (:func:`join_files`);
     #: empty for one file
     row_files: list[str] = field(default_factory=list)
@@ -313,7 +316,8 @@ class RawTable:
                 "footer_rows_skipped": self.footer_skipped,
                 **({"joined_by_time": self.joined} if self.joined else {}),
                 **({"tdms_properties": self.properties} if self.properties else {}),
-                **({"read_warnings": self.read_warnings} if self.read_warnings else {})}
+                **({"read_warnings": self.read_warnings} if self.read_warnings else {}),
+                **({"lvm_segments": self.lvm_segments} if self.lvm_segments else {})}
 
 
 def _column_letters(index: int) -> str:
@@ -417,10 +421,16 @@ def _text_table(path: Path, text: str) -> RawTable:
     # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
     parsed = [(n + j, cells) for n, line in lines
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
-    interval = None
+    interval, segments = None, {}
     if path.suffix.lower() == ".lvm":
         interval = _lvm_interval(parsed)
+        times, segments = _lvm_times(parsed)
         parsed = _without_later_lvm_headers(path, parsed)
+        if times:  # the x column LabVIEW would have written (X_Columns One)
+            heading = max(n for n, _ in parsed if n < min(times))
+            parsed = [(n, [repr(times[n]), *cells] if n in times else
+                       ["X_Value", *cells] if n == heading else cells)
+                      for n, cells in parsed]
     interval = interval or _labchart_interval(parsed)
     parsed = _labchart_header(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
@@ -431,7 +441,7 @@ def _text_table(path: Path, text: str) -> RawTable:
     table = replace(table, preamble=[(n, line.strip()) for n, line in numbered
                                      if n < table.header_row])
     if path.suffix.lower() == ".lvm":
-        table = _without_empty_x_column(table)
+        table = replace(_without_empty_x_column(table), lvm_segments=segments)
     return replace(table, interval=interval) if interval else table
 
 
@@ -529,22 +539,111 @@ def _labchart_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float]
     return (f"Interval= {text}", seconds) if math.isfinite(seconds) and seconds > 0 else None
 
 
-def _lvm_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float] | None:
-    """The sampling interval a LabVIEW measurement file's channel header states (``Delta_X``,
-    one cell per channel, all alike, where ``X_Dimension`` is time), as written and in
-    seconds; None where it has none, several channel headers (segments, each with its own
-    ``X0``: the rows alone do not tell when each began) or one that is no positive time."""
-    labelled = [(cells[0].strip(), [c.strip() for c in cells[1:] if c.strip()])
-                for _, cells in parsed if cells]
-    deltas = [cells for label, cells in labelled if label == "Delta_X"]
-    dimensions = [cells for label, cells in labelled if label == "X_Dimension"]
-    if len(deltas) != 1 or len(dimensions) != 1 or len(set(deltas[0])) != 1 or \
-            {d.lower() for d in dimensions[0]} != {"time"}:
+@dataclass(frozen=True)
+class _LvmSegment:
+    """A LabVIEW measurement file's segment: its channel header's first ``X0`` and
+    ``Delta_X`` (as written), its start as ``Date`` and ``Time`` give it (a datetime, or
+    None), and its data rows' indices in the file's parsed rows."""
+    x0: str
+    delta_x: str
+    moment: datetime.datetime | None
+    rows: range
+
+
+def _lvm_segments(parsed: list[tuple[int, list[str]]]) -> list[_LvmSegment] | None:
+    """The segments of a LabVIEW measurement file whose channel headers each state a time
+    axis (``X_Dimension`` Time, one ``Delta_X`` for every channel); None where any does not."""
+    heads, block = [], None
+    for k, (_, cells) in enumerate(parsed):
+        label = cells[0].strip() if cells else ""
+        values = [c.strip() for c in cells[1:] if c.strip()]
+        if label == "Channels":
+            block = {"at": k}
+        elif block is not None and label == "***End_of_Header***":
+            heads.append((block, k + 2))  # after its heading
+            block = None
+        elif block is not None and values:
+            block[label] = values
+    out = []
+    for (block, first), (after, _) in zip(heads, [*heads[1:], ({"at": len(parsed)}, 0)],
+                                          strict=True):
+        deltas = set(block.get("Delta_X", []))
+        if {d.lower() for d in block.get("X_Dimension", [])} != {"time"} or len(deltas) != 1 \
+                or "X0" not in block:
+            return None
+        moment = _lvm_moment(block.get("Date", [""])[0], block.get("Time", [""])[0])
+        out.append(_LvmSegment(block["X0"][0], deltas.pop(), moment, range(first, after["at"])))
+    return out or None
+
+
+def _lvm_moment(day: str, clock: str) -> datetime.datetime | None:
+    """A LabVIEW measurement file's ``Date`` (``2026/12/05``) and ``Time`` (``09:15:00.1234567
+    890123``, its seconds to any number of digits) as one datetime; None where either is none."""
+    try:
+        hours, minutes, seconds = clock.split(":")
+        return datetime.datetime.strptime(day, "%Y/%m/%d") + datetime.timedelta(
+            hours=int(hours), minutes=int(minutes), seconds=float(seconds))
+    except ValueError:
         return None
-    seconds = plain_number(deltas[0][0], ".")
+
+
+def _lvm_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float] | None:
+    """The sampling interval a LabVIEW measurement file's channel headers state (``Delta_X``,
+    one cell per channel, all alike, where ``X_Dimension`` is time), as written and in
+    seconds, where its rows follow on from each other: one segment, or segments each starting
+    one interval after the last row of the one before (:func:`_lvm_starts`). None where it has
+    none, segments whose times the rows alone do not tell (:func:`_lvm_times` gives them) or
+    one that is no positive time."""
+    segments = _lvm_segments(parsed)
+    if not segments or len({s.delta_x for s in segments}) != 1:
+        return None
+    seconds = plain_number(segments[0].delta_x, ".")
     if seconds is None or not (math.isfinite(seconds) and seconds > 0):
         return None
-    return f"Delta_X {deltas[0][0]}", seconds
+    starts = _lvm_starts(segments)
+    if len(segments) > 1 and (starts is None or any(
+            abs(later - start - seconds * len(a.rows)) > 0.5 * seconds
+            for a, start, later in zip(segments, starts, starts[1:], strict=False))):
+        return None
+    return f"Delta_X {segments[0].delta_x}", seconds
+
+
+def _lvm_starts(segments: list[_LvmSegment]) -> list[float] | None:
+    """Each segment's first sample [s] from the first's: by its ``X0`` where they differ,
+    else by its ``Date`` and ``Time`` (each segment's X0 alike from its own start); None where
+    neither tells."""
+    x0 = [plain_number(s.x0, ".") for s in segments]
+    if None not in x0 and len(set(x0)) > 1:
+        return [x - x0[0] for x in x0]
+    if any(s.moment is None for s in segments):
+        return None
+    return [(s.moment - segments[0].moment).total_seconds() for s in segments]
+
+
+def _lvm_times(parsed: list[tuple[int, list[str]]]) -> tuple[dict[int, float], dict]:
+    """A LabVIEW measurement file written without its x values (no ``X_Value`` heading) in
+    segments that do not follow on from each other (a pause between two writes): each data
+    row's time [s], by file row, its segment's start (:func:`_lvm_starts`) and ``Delta_X``
+    per row before it in the segment, and what timed them (:attr:`RawTable.lvm_segments`).
+    Empty where its rows are evenly spaced (:func:`_lvm_interval`), it has an x column or
+    its segments' starts are not told."""
+    segments = _lvm_segments(parsed)
+    if not segments or len(segments) < 2 or _lvm_interval(parsed) is not None or any(
+            cells and cells[0].strip() == "X_Value" for _, cells in parsed):
+        return {}, {}
+    starts = _lvm_starts(segments)
+    steps = [plain_number(s.delta_x, ".") for s in segments]
+    if starts is None or any(s is None or not (math.isfinite(s) and s > 0) for s in steps):
+        return {}, {}  # a record without time, as its rows are
+    ends = [start + step * len(s.rows) for s, start, step in zip(segments, starts, steps,
+                                                                  strict=True)]
+    x0 = {s.x0 for s in segments}
+    return {parsed[k][0]: start + step * j
+            for segment, start, step in zip(segments, starts, steps, strict=True)
+            for j, k in enumerate(segment.rows)}, {
+        "count": len(segments), "starts_from": "X0" if len(x0) > 1 else "Date and Time",
+        "delta_x": ", ".join(dict.fromkeys(s.delta_x for s in segments)),
+        "unlogged_s": float(sum(b - a for a, b in zip(ends, starts[1:], strict=False)))}
 
 
 def _labchart_header(path: Path,
@@ -2858,6 +2957,10 @@ class Recognition:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")
                           + ": the channel read beyond its range there")
+        if lvm := self.table.lvm_segments:
+            extras.append(f"'Time [s]' from its {lvm['count']} segments' {lvm['starts_from']} "
+                          f"and Delta_X {lvm['delta_x']}, {lvm['unlogged_s']:.4g} s between "
+                          "them unlogged")
         if wave := self.table.properties.get("waveform"):
             extras.append(f"'Time [s]' from the channels' wf_increment, {wave['wf_increment']:g} "
                           "s")

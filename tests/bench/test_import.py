@@ -1784,6 +1784,52 @@ def test_a_labview_file_without_its_times_is_timed_by_its_delta_x(x_columns, hea
                                rtol=1e-5)
 
 
+@pytest.mark.parametrize("starts, pause_s", [("X0", 0.0), ("X0", 2.0), ("Date and Time", 2.0)])
+def test_a_labview_file_of_segments_without_its_times_is_timed_by_each_segment(
+        starts, pause_s, tmp_path, mkm_cli):
+    # LabVIEW's Write To Measurement File called every 10 s (One header per segment, X Value
+    # Columns No): each segment's channel header holds its start (its X0 from the file's Time,
+    # or its own Date and Time with every X0 0) and Delta_X. Read as a record without time, its
+    # rows untimed ('if its rows were logged at a known rate, --sample-rate HZ times them'),
+    # and with a pause between writes every later hold shifted by the time not logged
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    force = thickwall_N(p, 0.0)
+    logged_s = t + pause_s * (t // 10.0)  # each segment of 100 rows written pause_s later
+    text = ("LabVIEW Measurement\t\nWriter_Version\t2\nReader_Version\t2\nSeparator\tTab\n"
+            "Decimal_Separator\t.\nMultiple_Headers\tYes\nX_Columns\tNo\nTime_Pref\tRelative\n"
+            "Date\t2026/12/05\nTime\t09:15:00.0000000000000000\n***End_of_Header***\t\n\t\n")
+    for j in range(0, t.size, 100):
+        x0 = logged_s[j] if starts == "X0" else 0.0
+        clock = f"09:{15 + int(logged_s[j]) // 60}:{logged_s[j] % 60:019.16f}"
+        text += (f"Channels\t2\t\t\nSamples\t100\t100\t\nDate\t2026/12/05\t2026/12/05\t\n"
+                 f"Time\t{clock}\t{clock}\t\nY_Unit_Label\tkPa\tkN\t\n"
+                 f"X_Dimension\tTime\tTime\t\nX0\t{x0:.16E}\t{x0:.16E}\t\n"
+                 "Delta_X\t0.100000\t0.100000\t\n***End_of_Header***\t\t\t\n"
+                 "Druck\tKraft\tComment\n" + "".join(
+                     f"{a * 100:.6f}\t{b / 1000:.6f}\t\n"
+                     for a, b in zip(p[j:j + 100], force[j:j + 100], strict=True)))
+    path = tmp_path / "segments.lvm"
+    path.write_text(text, encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    if pause_s:
+        assert ("'Time [s]' -> time [s], 'Druck [kPa]' -> pressure [kPa -> bar], 'Kraft [kN]' "
+                f"-> force [kN -> N]; 20 title row(s) skipped, 'Time [s]' from its 6 segments' "
+                f"{starts} and Delta_X 0.100000, 10 s between them unlogged") in err, err
+        assert run.meta.imported_from["lvm_segments"] == {
+            "count": 6, "starts_from": starts, "delta_x": "0.100000",
+            "unlogged_s": pytest.approx(10.0)}
+    else:
+        assert "rows at 10 Hz by the header's Delta_X 0.100000" in err, err
+    # every row at its time, to the X0's 17 digits and Time's 16 decimals
+    np.testing.assert_allclose(run.samples["time_s"], logged_s, atol=1e-9)
+    assert run.meta.imported_from["shape"] == "staircase"
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    np.testing.assert_allclose(run.steps["force_N_mean"], thickwall_N([1.0, 2.0, 2.5], 0.0),
+                               rtol=1e-5)
+
+
 @pytest.mark.parametrize("rate, why", [
     ("0", "--sample-rate 0 Hz is invalid: expected the rate the table's rows were logged at, a "
           "finite number > 0 Hz"),
