@@ -50,7 +50,9 @@ from mkm.bench.storage import (
     muscle_from_dict,
 )
 from mkm.bench.tables import (
+    CLOCK_ORIGIN_S,
     SUMMED_ROLES,
+    UNIX_TIME_S,
     VOLTS_ROLES,
     Recognition,
     Scaling,
@@ -100,13 +102,6 @@ if TYPE_CHECKING:
     from mkm.fem.tolerances import Tolerances
 
 REQUIRED_ROLES = ("pressure", "force")
-#: a time column whose first reading is this far from 0 s (Unix time, seconds since 1970) is
-#: counted from its first row: a run folder's times stay within its cells' bound
-#: (:data:`mkm.bench.storage.MAX_CELL_MAGNITUDE`) and keep their milliseconds in 10 digits
-CLOCK_ORIGIN_S = 1e6
-#: such a first reading is said as the moment it is in Unix time between these [s] (2001 and
-#: 2100)
-UNIX_TIME_S = (1e9, 4.1e9)
 #: what to know choosing among columns that each hold a role by their unit
 SEVERAL_BY_UNIT = {"pressure": "the sensor at the muscle, not one upstream of the regulator"}
 #: columns whose values split one table into runs (one muscle state each)
@@ -571,6 +566,10 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
             imported.update(file=tables[0].source.name, files=joined.files,
                             clock=joined.clock, between_files_s=between_files_s)
             built[-1][3].insert(0, joined.note)
+            if joined.origin_s is not None:
+                built[-1][3].insert(1, _counted_from(
+                    joined.found["time"].header, joined.origin_s,
+                    f"the first row of {joined.files[0]['file']}", imported))
             if apart := _files_apart(built[-1][1], joined.files):
                 built[-1][3].append(apart)
         bar.done()
@@ -1207,6 +1206,20 @@ def _linear_tare(group: _Group, time_s, pressure, force, rest, handling):
     return rest.force_N, rest.force_N + slope * (np.asarray(time_s) - t_start)
 
 
+def _counted_from(header: str, origin_s: float, row: str, handling) -> str:
+    """The note of a time column counted from its first reading ``origin_s`` (that of
+    ``row``), far from 0 (:data:`~mkm.bench.tables.CLOCK_ORIGIN_S`): recorded as
+    ``time_origin_s``, and where it is Unix time as ``record_started_utc``, its moment in ISO
+    form."""
+    handling["time_origin_s"] = origin_s
+    said = f"{header!r} counted from {row}, {origin_s:.13g} s"
+    if not UNIX_TIME_S[0] <= origin_s <= UNIX_TIME_S[1]:
+        return said
+    moment = datetime.datetime.fromtimestamp(origin_s, datetime.UTC)
+    handling["record_started_utc"] = moment.isoformat(timespec="milliseconds")
+    return f"{said} (Unix time, {moment:%Y-%m-%d %H:%M:%S} UTC)"
+
+
 def _reading(force_N: float, force: np.ndarray) -> str:
     """What a table or record without a 0 bar reading reads where its rising branch starts,
     ``force_N``: one within 1 % of its largest force of 0 N is named as a load cell zeroed
@@ -1266,12 +1279,10 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         time_s = group.values("time")
         require_time_order(time_s, found["time"].header, lambda k: group.where(k, "time"))
         if abs(time_s[0]) >= CLOCK_ORIGIN_S:
-            handling["time_origin_s"] = origin = float(time_s[0])
-            time_s = time_s - origin
-            moment = datetime.datetime.fromtimestamp(origin, datetime.UTC)
-            notes.append(f"{found['time'].header!r} counted from its first row, {origin:.13g} s"
-                         + (f" (Unix time, {moment:%Y-%m-%d %H:%M:%S} UTC)"
-                            if UNIX_TIME_S[0] <= origin <= UNIX_TIME_S[1] else ""))
+            origin = float(time_s[0])
+            time_s = np.round(time_s - origin, 6)  # a float's digits at Unix time's 1.8e9 s
+            notes.append(_counted_from(found["time"].header, origin, "its first row",
+                                       handling))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
     record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)

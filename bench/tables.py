@@ -3142,6 +3142,15 @@ def _check_declared_states(read: list[tuple[Path, RawTable, dict]]) -> None:
                                  f"{what}")
 
 
+#: a time column whose first reading is this far from 0 s (Unix time, seconds since 1970) is
+#: counted from its first row: a run folder's times stay within its cells' bound
+#: (:data:`mkm.bench.storage.MAX_CELL_MAGNITUDE`) and keep their milliseconds in 10 digits
+CLOCK_ORIGIN_S = 1e6
+#: such a first reading is said as the moment it is in Unix time between these [s] (2001 and
+#: 2100)
+UNIX_TIME_S = (1e9, 4.1e9)
+
+
 @dataclass
 class JoinedFiles:
     """Several files of one record read as one table (:func:`join_files`)."""
@@ -3156,6 +3165,9 @@ class JoinedFiles:
     clock: str
     #: how they were joined, in words
     note: str
+    #: the first reading of a continuing clock far from 0 s (:data:`CLOCK_ORIGIN_S`: Unix
+    #: time), from which the joined times count; None for any other clock
+    origin_s: float | None = None
 
 
 def _file_clock(table: RawTable, found: dict[str, Column]):
@@ -3238,6 +3250,7 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
     by_clock = sorted(range(len(read)), key=lambda k: start[k])
     overlap = next(((a, b) for a, b in itertools.pairwise(by_clock) if start[b] <= end[a]),
                    None)
+    origin_s = None
     if overlap is None:
         if between_files_s is not None:
             raise ValueError(f"--between-files {between_files_s:g} s: the files' clock "
@@ -3246,6 +3259,9 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
                              "restart")
         order, clock = by_clock, "continues"
         placed = [start[k] - start[by_clock[0]] for k in order]
+        if all(origin is None for _, origin in clocks) and \
+                abs(start[by_clock[0]]) >= CLOCK_ORIGIN_S:
+            origin_s = start[by_clock[0]]
         shift = [(clocks[k][1] or 0.0) - start[by_clock[0]] for k in order]
     elif all(origin is None and _own_start(times, None) for times, origin in clocks):
         order, clock = list(range(len(read))), "restarts"
@@ -3271,18 +3287,22 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
     for j, k in enumerate(order):
         path, table, found = read[k]
         times = clocks[k][0]
-        for row, t in zip(table.rows, times + shift[j], strict=True):
+        joined_s = times + shift[j]
+        if origin_s is not None:  # to the microsecond, a float's digits at Unix time
+            joined_s = np.round(joined_s, 6)
+        for row, t in zip(table.rows, joined_s, strict=True):
             row = list(row)
             row[index] = float(t)
             rows.append(row)
         numbers += table.row_numbers
         row_files += [path.name] * len(table.rows)
         files.append({"file": path.name, "sha256": file_sha256(path), "rows": len(table.rows),
-                      "clock_as_read_s": [float(times[0]), float(times[-1])],
-                      "placed_at_s": float(placed[j])})
+                      **_file_span(times, origin_s), "placed_at_s": float(placed[j])})
     names = [f["file"] for f in files]
     gaps = [placed[j + 1] - (placed[j] + clocks[order[j]][0][-1] - clocks[order[j]][0][0])
             for j in range(len(order) - 1)]
+    if origin_s is not None:
+        gaps = [round(g, 6) for g in gaps]
     # the level a hold keeps across each join (a logger rolling its file mid-hold), or None
     held = [_held_across(pressures[a], pressures[b]) for a, b in itertools.pairwise(order)]
     for j, (gap, level) in enumerate(zip(gaps, held, strict=True), start=1):
@@ -3329,7 +3349,20 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
     table = replace(first, source=source, rows=rows, row_numbers=numbers, row_files=row_files,
                     preamble=preamble)
     found = {**first_found, "time": Column("time", index, first_found["time"].header, "s")}
-    return JoinedFiles(table, found, files, clock, note)
+    return JoinedFiles(table, found, files, clock, note, origin_s)
+
+
+def _file_span(times: np.ndarray, origin_s: float | None) -> dict:
+    """A joined file's first and last time as read, or counted from ``origin_s`` (the joined
+    clock's first reading, :attr:`JoinedFiles.origin_s`) to the microsecond, a float's digits
+    at Unix time's 1.8e9 s, with its first reading's moment where that is Unix time."""
+    if origin_s is None:
+        return {"clock_as_read_s": [float(times[0]), float(times[-1])]}
+    span = {"clock_s": [round(float(t) - origin_s, 6) for t in (times[0], times[-1])]}
+    if UNIX_TIME_S[0] <= times[0] <= UNIX_TIME_S[1]:
+        span["first_row_utc"] = datetime.datetime.fromtimestamp(
+            float(times[0]), datetime.UTC).isoformat(timespec="milliseconds")
+    return span
 
 
 #: the samples at each side of a join whose pressures judge whether it falls within a hold

@@ -1741,6 +1741,8 @@ def test_a_clocks_zone_or_origin_is_read_and_its_unix_time_counted_from_the_star
     # time to 0.2 us)
     np.testing.assert_allclose(run.samples["time_s"], t, atol=5e-4)
     assert run.meta.imported_from.get("time_origin_s") == origin_s
+    assert run.meta.imported_from.get("record_started_utc") == (
+        "2026-11-30T00:53:20.000+00:00" if origin_s else None)
     assert ((f"{header!r} counted from its first row, 1796000000 s (Unix time, 2026-11-30 "
              "00:53:20 UTC)") in err) is (origin_s is not None)
     _scores(tmp_path, [run])  # read back by mkm report
@@ -3218,17 +3220,43 @@ def test_a_record_logged_a_file_per_step_imports_as_one_run(tmp_path, mkm_cli):
         STEP_FILE_LEVELS[1:-1], abs=0.01)
 
 
-def test_files_whose_clock_continues_are_ordered_by_it(tmp_path, mkm_cli):
+@pytest.mark.parametrize("unix", [False, True])
+def test_files_whose_clock_continues_are_ordered_by_it(unix, tmp_path, mkm_cli):
     # given out of order, the clock the files share orders them and keeps the time between
-    # them as logged
+    # them as logged. In Unix time (seconds since 1970, to the millisecond) each file's clock
+    # was kept as read in imported_from (1796000003-1796000019.9 s), and nothing said when
+    # the record began
     files, clock, _ = _files_per_step(tmp_path / "LM8", clock_restarts=False)
+    if unix:
+        for path in files:
+            lines = path.read_text().splitlines(keepends=True)
+            frame = pd.read_csv(path, comment="#")
+            frame["Time [s]"] = [f"{1796000000 + t:.3f}" for t in frame["Time [s]"]]
+            path.write_text("".join(lines[:2]) + frame.rename(
+                columns={"Time [s]": "Timestamp (s since epoch)"}).to_csv(index=False))
     shuffled = [files[k] for k in (3, 0, 10, 1, 2, 4, 5, 6, 7, 8, 9)]
     (run,), err = _import(mkm_cli, shuffled[0], *map(str, shuffled[1:]), *MUSCLE, "--eps", "0")
-    assert run.meta.imported_from["clock"] == "continues"
-    assert [f["file"] for f in run.meta.imported_from["files"]] == [f.name for f in files]
+    recorded = run.meta.imported_from
+    assert recorded["clock"] == "continues"
+    assert [f["file"] for f in recorded["files"]] == [f.name for f in files]
+    # the record's own clock from its first logged sample, to the microsecond at Unix time
     assert run.samples["time_s"].to_numpy() == pytest.approx(clock - UNLOGGED_S, abs=1e-9)
     assert ("11 files joined on their clock, which continues from one to the next: ordered by "
             "it, step0.csv first, the time between files as logged (3.1-3.1 s)") in err
+    assert [f["join"]["gap_s"] for f in recorded["files"][1:]] == pytest.approx([3.1] * 10,
+                                                                                abs=1e-9)
+    if not unix:
+        assert recorded["files"][1]["clock_as_read_s"] == pytest.approx([23.0, 39.9])
+        assert "time_origin_s" not in recorded
+        return
+    # each file's span on the run's clock, from 0, and its first row's moment
+    assert recorded["files"][1]["clock_s"] == [20.0, 36.9]
+    assert recorded["files"][1]["first_row_utc"] == "2026-11-30T00:53:43.000+00:00"
+    assert recorded["time_origin_s"] == 1796000003.0
+    assert recorded["record_started_utc"] == "2026-11-30T00:53:23.000+00:00"
+    assert not any("clock_as_read_s" in f for f in recorded["files"])
+    assert ("'Timestamp (s since epoch)' counted from the first row of step0.csv, 1796000003 s "
+            "(Unix time, 2026-11-30 00:53:23 UTC)") in err, err
 
 
 def test_files_of_date_times_are_ordered_and_refused_by_them(tmp_path, mkm_cli):
