@@ -2190,10 +2190,13 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     plain = _plain_numbers(raw, table.decimal)
     values = plain if plain is not None else np.empty(len(raw))
     inline: dict[str, int] = {}
+    grouped = plain is None and _points_group(table, column, raw)
     for k, cell in enumerate(raw if plain is None else ()):
         if optional and str(cell).strip() == "":
             values[k] = math.nan
             continue
+        if grouped and _POINT_GROUPED.match(str(cell).strip()):
+            cell = str(cell).strip().replace(".", "")
         number, unit = _number(cell, table.decimal)
         if number is None:
             formula = _formula(table, k, column.index) if cell == "" else None
@@ -2241,6 +2244,35 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     if clock is not None:  # an Arduino's micros() or millis(): its 32-bit counter overflows
         values = _carried_on(values, float((CLOCK_WRAP * parse_unit(clock)).to("s").magnitude))
     return _carried_on(values, _DAY_S)
+
+
+#: a number grouped by points with no decimal mark ('250.000'): beside decimal commas, its
+#: thousands grouped or a decimal point (a column another program wrote)
+_POINT_GROUPED = re.compile(r"^[+-]?[1-9]\d{0,2}(\.\d{3})+$")
+
+
+def _points_group(table: RawTable, column: Column, raw: list) -> bool:
+    """Whether the points of a decimal-comma table's column group thousands ('250.000' beside
+    '1.048,96' or '12,5' in the column); False where it has none so written, or points that
+    are decimal points ('1.25'); ``ValueError`` naming the first such cell where every one
+    of the column's numbers with a point could be either."""
+    if table.decimal != ",":
+        return False
+    texts = [str(c).strip() for c in raw]
+    first = next((k for k, t in enumerate(texts) if _POINT_GROUPED.match(t)), None)
+    if first is None:
+        return False
+    if any(_COMMA_DECIMAL.match(t) or _GROUPED[","].match(t) for t in texts):
+        return True
+    if any("." in t and not _POINT_GROUPED.match(t) for t in texts):
+        return False
+    cell = texts[first]
+    raise ValueError(f"{table.where(first, column.index)} (column {column.header!r}): "
+                     f"{cell!r} in a table of decimal commas could be "
+                     f"{float(cell.replace('.', '')):g} with its thousands grouped or "
+                     f"{float(cell):g} with a decimal point, as could every number of the "
+                     "column with a point: expected the file saved without thousands "
+                     "separators (Excel: Format Cells, Number, no 1000 separator)")
 
 
 def _carried_on(seconds: np.ndarray, period_s: float) -> np.ndarray:
