@@ -50,7 +50,9 @@ from mkm.bench.storage import (
     muscle_from_dict,
 )
 from mkm.bench.tables import (
+    CLOCK_ORIGIN_S,
     SUMMED_ROLES,
+    UNIX_TIME_S,
     VOLTS_ROLES,
     Recognition,
     Scaling,
@@ -100,13 +102,6 @@ if TYPE_CHECKING:
     from mkm.fem.tolerances import Tolerances
 
 REQUIRED_ROLES = ("pressure", "force")
-#: a time column whose first reading is this far from 0 s (Unix time, seconds since 1970) is
-#: counted from its first row: a run folder's times stay within its cells' bound
-#: (:data:`mkm.bench.storage.MAX_CELL_MAGNITUDE`) and keep their milliseconds in 10 digits
-CLOCK_ORIGIN_S = 1e6
-#: such a first reading is said as the moment it is in Unix time between these [s] (2001 and
-#: 2100)
-UNIX_TIME_S = (1e9, 4.1e9)
 #: what to know choosing among columns that each hold a role by their unit
 SEVERAL_BY_UNIT = {"pressure": "the sensor at the muscle, not one upstream of the regulator"}
 #: columns whose values split one table into runs (one muscle state each)
@@ -120,6 +115,9 @@ ZERO_CHOICES = ("auto", "none")
 #: [N]: two ADC steps of a bench's load cell, the slack steps' floor identify uses for a table
 #: (:data:`mkm.identify.goodness.ZERO_FLOOR_N`), where no force accuracy is declared
 TABLE_ZERO_DRIFT_N = 0.5
+#: ... and one beyond this share of its largest force may be a load cell zeroed again at a
+#: row (:func:`_table_zero_drift`), its tare pressed with the muscle pulling
+TABLE_ZERO_STEP_SHARE = 0.05
 #: ``--tare linear``: a time series' zero taken at its rests before the rise and after the vent
 #: that ends it, joined by a line in time (a load cell that drifted through the record)
 LINEAR_TARE = "linear"
@@ -568,6 +566,10 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
             imported.update(file=tables[0].source.name, files=joined.files,
                             clock=joined.clock, between_files_s=between_files_s)
             built[-1][3].insert(0, joined.note)
+            if joined.origin_s is not None:
+                built[-1][3].insert(1, _counted_from(
+                    joined.found["time"].header, joined.origin_s,
+                    f"the first row of {joined.files[0]['file']}", imported))
             if apart := _files_apart(built[-1][1], joined.files):
                 built[-1][3].append(apart)
         bar.done()
@@ -1060,58 +1062,121 @@ def _zero_drift(group: _Group, time_s, pressure, force, rest, handling):
     drift recorded as ``zero_drift_N`` (end less start), said when it is beyond 4 standard
     errors of the two rests' means. Where the force steps by that drift within a hold
     (:func:`mkm.bench.series.zero_step`: the load cell zeroed again mid-record), each sample is
-    tared at the zero it was logged with, the start's before the step and the end's from it on.
-    (notes, the zero at every sample or None)."""
-    end = series.end_rest(time_s, pressure, force)
+    tared at the zero it was logged with, the start's before the step and the end's from it on,
+    the samples a filter spread the step over at a zero linear across them. ``time_s`` None: a
+    record without time, its rows the clock. (notes, the zero at every sample or None, the
+    samples it stepped through: in no step's mean)."""
+    clock = np.arange(force.size, dtype=float) if time_s is None else time_s
+    end = series.end_rest(clock, pressure, force)
     if (end.rest.start <= rest.rest.stop or end.pressure_bar > series.VENTED_THRESHOLD_BAR
             or not (math.isfinite(end.std_N) and math.isfinite(rest.std_N))):
-        return [], None
+        return [], None, slice(0, 0)
     drift = end.force_N - rest.force_N
     handling["zero_drift_N"] = drift
     noise = 4.0 * math.hypot(end.std_N, rest.std_N)
     if abs(drift) <= noise:
-        return [], None
+        return [], None, slice(0, 0)
     stepped = series.zero_step(pressure, force, slice(rest.rest.stop, end.rest.start), drift,
                                _rest_spread_N(force, rest, end))
     if stepped is None:
+        linear = (f"--tare {LINEAR_TARE}" if time_s is not None else
+                  f"--sample-rate HZ (the rate its rows were logged at) with --tare {LINEAR_TARE}")
         return [f"the force vented at the end reads {drift:+.3g} N from the zero at the start "
                 f"(beyond the rests' noise, {noise:.2g} N): a load cell that drifted, or a "
                 "muscle that did not come back; every step keeps the start's zero: where the "
-                f"cell drifted (the muscle vented pulls nothing), --tare {LINEAR_TARE} takes "
-                "the zero linearly in time between the two rests"], None
-    k, step = stepped
-    at_s, held_bar = float(time_s[k]), float(np.median(pressure[k:k + series.ZERO_STEP_SAMPLES]))
+                f"cell drifted (the muscle vented pulls nothing), {linear} takes the zero "
+                "linearly in time between the two rests"], None, slice(0, 0)
+    k, step = stepped.first, stepped.step_N
+    held_bar = float(np.median(pressure[stepped.start:k + series.ZERO_STEP_SAMPLES]))
     cell = group.cell(k, "force")
-    handling["zero_step"] = {"at_s": at_s, "cell": cell, "step_N": step,
-                             "pressure_bar": held_bar}
+    spread = k - stepped.start
+    recorded = {"cell": cell, "step_N": step, "pressure_bar": held_bar,
+                "spread_samples": spread}
+    if time_s is None:
+        at, there = f"at cell {cell}", f"before cell {cell}"
+    else:
+        recorded = {"at_s": float(time_s[k]), **recorded}
+        at, there = f"at {time_s[k]:.4g} s (cell {cell})", f"to {time_s[k]:.4g} s"
+    if spread:
+        from_cell = group.cell(stepped.start, "force")
+        at = (f"over {spread + 1} samples from cell {from_cell} to cell {cell}"
+              if time_s is None else
+              f"over {time_s[k] - time_s[stepped.start - 1]:.3g} s from "
+              f"{time_s[stepped.start - 1]:.4g} s to {time_s[k]:.4g} s (cells {from_cell} to "
+              f"{cell})")
+    handling["zero_step"] = recorded
     closing = (f"the mean force of the {end.rest.stop - end.rest.start} sample(s) of the vented "
                "rest that ends the record")
-    handling["tare"] += f", to {at_s:.4g} s; from there ({cell}) {closing}, {end.force_N:.4g} N"
+    handling["tare"] += f", {there}; from there ({cell}) {closing}, {end.force_N:.4g} N"
     zero = np.where(np.arange(force.size) < k, rest.force_N, end.force_N)
-    return [f"tare {rest.force_N:.4g} N subtracted to {at_s:.4g} s, {end.force_N:.4g} N from "
-            f"there ({closing}): the force steps by {step:+.4g} N at {at_s:.4g} s (cell {cell}) "
+    # a moving average of N readings reads the new zero's share (j + 1) / N at its j-th sample
+    share = np.arange(1, spread + 1) / (spread + 1)
+    zero[stepped.start:k] = rest.force_N + share * (end.force_N - rest.force_N)
+    smeared = (f"; the {spread} sample(s) between read it part way (a display's or "
+               "amplifier's average over readings either side of the tare): tared at a zero "
+               "linear across them, in no step's mean" if spread else "")
+    return [f"tare {rest.force_N:.4g} N subtracted {there}, {end.force_N:.4g} N from "
+            f"there ({closing}): the force steps by {step:+.4g} N {at} "
             f"while the pressure holds at {held_bar:.3g} bar, as far as the force vented at the "
             "end reads from the zero at the start: the load cell zeroed again there (its tare "
             "pressed with the muscle pulling), each sample tared at the zero it was logged "
-            f"with; --tare {rest.force_N:.4g} keeps the start's zero throughout"], zero
+            f"with{smeared}; --tare {rest.force_N:.4g} keeps the start's zero throughout"], zero, \
+        slice(stepped.start, k)
 
 
-def _table_zero_drift(force, zero: float, closing_rows, declared, handling) -> list[str]:
+def _table_zero_drift(group: _Group, pressure, force, zero: float, closing_rows, declared,
+                      handling):
     """The note (if any) of a step table tared at its 0 bar rising row(s) whose falling branch
     ends at 0 bar reading another force: the difference recorded as ``zero_drift_N``, said when
     beyond :data:`TABLE_ZERO_DRIFT_N` or twice the declared force accuracy's absolute part (a
-    table has no noise to judge it by)."""
+    table has no noise to judge it by). Where it is beyond :data:`TABLE_ZERO_STEP_SHARE` of the
+    largest force, the table as read has a force that moves against its pressure from one row
+    to the next or a pressurised row pulling less than nothing, and one pressurised row, its
+    force and those after it tared at the closing rows' zero, leaves every force following its
+    pressure from row to row, with the least travel of the force up and down by the drift or
+    more (a row tared at another zero moves it there and back), the load cell was zeroed again
+    at that row: the rows from it on are tared at the closing zero. (notes, the zero at every
+    row or None)."""
     if closing_rows is None or not closing_rows.any():
-        return []
-    drift = float(np.mean(force[closing_rows])) - zero
+        return [], None
+    closing = float(np.mean(force[closing_rows]))
+    drift = closing - zero
     handling["zero_drift_N"] = drift
     floor = max(TABLE_ZERO_DRIFT_N, 2.0 * declared.absolute if declared else 0.0)
     if abs(drift) <= floor:
-        return []
-    return [f"the 0 bar row(s) that end the falling branch read {drift:+.3g} N from the zero "
-            f"at the start (beyond {floor:.2g} N): a load cell that drifted, or a muscle that "
-            "did not come back; every step keeps the start's zero (a table's rows have no time "
-            "to spread a drift over: --tare N sets another zero)"]
+        return [], None
+    said = (f"the 0 bar row(s) that end the falling branch read {drift:+.3g} N from the zero "
+            f"at the start (beyond {floor:.2g} N)")
+
+    def rises(zeros) -> bool:
+        # from each row to the next the force follows the pressure up or down
+        return not np.any(np.sign(np.diff(pressure)) * np.diff(force - zeros) < -floor)
+
+    def travel(k) -> float:
+        # a row tared at the wrong zero moves the force there and back again
+        return float(np.abs(np.diff(force - np.where(start < k, zero, closing))).sum())
+
+    start = np.arange(force.size)
+    fits = sorted((k for k in range(1, force.size) if pressure[k] > series.VENTED_THRESHOLD_BAR
+                   and rises(np.where(start < k, zero, closing))), key=travel)
+    if (abs(drift) <= TABLE_ZERO_STEP_SHARE * float(np.max(np.abs(force - zero))) or not fits
+            or (len(fits) > 1 and travel(fits[1]) < travel(fits[0]) + abs(drift))
+            or (rises(np.full(force.size, zero)) and not np.any(
+                force[pressure > series.VENTED_THRESHOLD_BAR] - zero < -floor))):
+        return [f"{said}: a load cell that drifted, or a muscle that did not come back; every "
+                "step keeps the start's zero (a table's rows have no time to spread a drift "
+                "over: --tare N sets another zero)"], None
+    k = fits[0]
+    cell = group.cell(k, "force")
+    handling["zero_step"] = {"cell": cell, "step_N": drift, "pressure_bar": float(pressure[k])}
+    handling["tare"] += f", before cell {cell}; from there the closing row(s)' {closing:.4g} N"
+    return [f"tare {zero:.4g} N subtracted before cell {cell}, {closing:.4g} N from there: "
+            f"{said}, and with the rows from {cell} ({pressure[k]:.3g} bar) on tared at theirs "
+            "every force follows its pressure from row to row, the least up and down of any "
+            "row's: the load cell zeroed again there "
+            "(its tare pressed with the muscle pulling), each row tared at the zero it was "
+            f"logged with; --tare {zero:.4g} keeps the start's zero throughout"], \
+        np.where(start < k, zero, closing)
 
 
 def _linear_tare(group: _Group, time_s, pressure, force, rest, handling):
@@ -1139,6 +1204,20 @@ def _linear_tare(group: _Group, time_s, pressure, force, rest, handling):
                         "(the vented rest that ends the record), a drift of "
                         f"{end.force_N - rest.force_N:+.3g} N")
     return rest.force_N, rest.force_N + slope * (np.asarray(time_s) - t_start)
+
+
+def _counted_from(header: str, origin_s: float, row: str, handling) -> str:
+    """The note of a time column counted from its first reading ``origin_s`` (that of
+    ``row``), far from 0 (:data:`~mkm.bench.tables.CLOCK_ORIGIN_S`): recorded as
+    ``time_origin_s``, and where it is Unix time as ``record_started_utc``, its moment in ISO
+    form."""
+    handling["time_origin_s"] = origin_s
+    said = f"{header!r} counted from {row}, {origin_s:.13g} s"
+    if not UNIX_TIME_S[0] <= origin_s <= UNIX_TIME_S[1]:
+        return said
+    moment = datetime.datetime.fromtimestamp(origin_s, datetime.UTC)
+    handling["record_started_utc"] = moment.isoformat(timespec="milliseconds")
+    return f"{said} (Unix time, {moment:%Y-%m-%d %H:%M:%S} UTC)"
 
 
 def _reading(force_N: float, force: np.ndarray) -> str:
@@ -1200,12 +1279,10 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         time_s = group.values("time")
         require_time_order(time_s, found["time"].header, lambda k: group.where(k, "time"))
         if abs(time_s[0]) >= CLOCK_ORIGIN_S:
-            handling["time_origin_s"] = origin = float(time_s[0])
-            time_s = time_s - origin
-            moment = datetime.datetime.fromtimestamp(origin, datetime.UTC)
-            notes.append(f"{found['time'].header!r} counted from its first row, {origin:.13g} s"
-                         + (f" (Unix time, {moment:%Y-%m-%d %H:%M:%S} UTC)"
-                            if UNIX_TIME_S[0] <= origin <= UNIX_TIME_S[1] else ""))
+            origin = float(time_s[0])
+            time_s = np.round(time_s - origin, 6)  # a float's digits at Unix time's 1.8e9 s
+            notes.append(_counted_from(found["time"].header, origin, "its first row",
+                                       handling))
     # a record whose time column was left out (its rows evenly spaced in time) is read as a
     # time series is, its rows the clock
     record = not (timed or one_step_per_row) and series.sampled_without_time(pressure)
@@ -1361,7 +1438,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         if tare == "auto" and not zero_at <= series.VENTED_THRESHOLD_BAR and vented_rows.any():
             closing_rows = vented_rows
     drift: list[str] = []
-    line = None
+    line, unread = None, slice(0, 0)
     if tare == "none":
         zero, handling["tare"] = 0.0, "none"
     elif tare == LINEAR_TARE:
@@ -1408,15 +1485,17 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
             notes.append(f"tare from only {n} sample(s): the pressure rises {rises_s:.3g} s "
                          "into the record; a vented rest of a second or more before it, or "
                          "--tare N, gives a surer zero")
-        drift, line = _zero_drift(group, time_s, pressure, force, rest, handling)
+        drift, line, unread = _zero_drift(group, time_s, pressure, force, rest, handling)
     elif tare == "auto" and record:
         handling["tare"] = f"mean force of the {rest.rest.stop} row(s) before the pressure rises"
         handling["tare_std_N"] = rest.std_N
+        drift, line, unread = _zero_drift(group, None, pressure, force, rest, handling)
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
-        drift = _table_zero_drift(force, zero, ~up & (pressure <= series.VENTED_THRESHOLD_BAR)
-                                  if zero_at <= series.VENTED_THRESHOLD_BAR else None,
-                                  accuracy.get("force"), handling)
+        drift, line = _table_zero_drift(
+            group, pressure, force, zero,
+            ~up & (pressure <= series.VENTED_THRESHOLD_BAR)
+            if zero_at <= series.VENTED_THRESHOLD_BAR else None, accuracy.get("force"), handling)
     else:
         zero, handling["tare"] = force_sign * float(tare), "given"
         if zero >= float(np.nanmax(force)):  # every force <= 0: a muscle that never pulled
@@ -1443,7 +1522,8 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
 
             spread_N = _rest_spread_N(force, rest, closing)
             config, factor = series.settle_for_cell(load_config(), spread_N)
-            steps, step_of = series.staircase_steps(time_s, pressure, force, config, held)
+            steps, step_of = series.staircase_steps(time_s, pressure, force, config, held,
+                                                    unread)
             handling["steps_from"] = ("plateaus judged by the bench's settle test "
                                       "(packaged [settle] criteria), averaged by HoldStats")
             if factor > 1.0:
@@ -1497,7 +1577,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         what = (f"a record without time ({pressure.size} rows, successive readings "
                 f"{apart:.2g} bar apart, the median)")
         if shape == "staircase":
-            steps = series.untimed_staircase_steps(pressure, force, held)
+            steps = series.untimed_staircase_steps(pressure, force, held, unread)
             handling["steps_from"] = (f"{what}: plateaus of {series.RECORD_PLATEAU_ROWS} rows "
                                       "or more, each averaged over its second half")
             done = f"its {len(steps)} plateaus averaged over their second halves"

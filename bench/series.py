@@ -269,49 +269,69 @@ def end_rest(time_s: np.ndarray, pressure_bar: np.ndarray, force_N: np.ndarray) 
 ZERO_STEP_SAMPLES = 5
 #: ... the pressure's medians either side within this [bar]: held, the step not the muscle's
 ZERO_STEP_HELD_BAR = 0.01
+#: ... and shows in the logged force over this many samples at most: a display's or
+#: amplifier's moving average of N readings turns the tare's step into a line over N samples
+ZERO_STEP_SMEAR_SAMPLES = 10
+
+
+@dataclass(frozen=True)
+class ZeroStep:
+    """Where a record's zero stepped (:func:`zero_step`): the samples from ``start`` to
+    ``first`` - 1 read it part way (a filter's average of readings either side of the tare;
+    none where it steps from one sample to the next), ``first`` on read the new zero."""
+    start: int
+    first: int
+    step_N: float
 
 
 def zero_step(pressure_bar: np.ndarray, force_N: np.ndarray, within: slice, drift_N: float,
-              spread_N: float) -> tuple[int, float] | None:
-    """Where a record's zero stepped: the sample within ``within`` from which the force's
-    median over :data:`ZERO_STEP_SAMPLES` samples differs most from the median of those before
-    it, in the sense of ``drift_N`` (the closing rest's zero less the starting one's), while
-    the pressure holds (its medians within :data:`ZERO_STEP_HELD_BAR`), where that step is the
-    drift (within a tenth of it and 4 of its standard errors), 20 times the noise of a sample's
-    difference from the next or more (``spread_N``, the load cell's spread at rest), and made
-    from one sample to the next: a load cell zeroed again mid-record, its tare pressed with the
-    muscle pulling. A drift in time shows no such step. (index of the step's first sample, the
-    step [N]) or None."""
+              spread_N: float) -> ZeroStep | None:
+    """Where a record's zero stepped within ``within``: the force's median over
+    :data:`ZERO_STEP_SAMPLES` samples differs from the median of those before it (next to
+    them, or up to :data:`ZERO_STEP_SMEAR_SAMPLES` samples on) in the sense of ``drift_N``
+    (the closing rest's zero less the starting one's), by the drift (within a tenth of it and
+    4 of its standard errors) and 20 times the noise of a sample's difference from the next
+    or more (``spread_N``, the load cell's spread at rest), while the pressure holds (every
+    such median between the two within :data:`ZERO_STEP_HELD_BAR`): a load cell zeroed again
+    mid-record, its tare pressed with the muscle pulling. The nearest such windows are taken;
+    the samples between them that read neither zero are the step's spread, at most
+    :data:`ZERO_STEP_SMEAR_SAMPLES`. A drift in time shows no such step, and a ramp's turn
+    through its friction no held pressure. None where there is none."""
     w = ZERO_STEP_SAMPLES
-    start, stop = max(within.start or 0, w), min(within.stop, force_N.size - w + 1)
-    if stop <= start or not math.isfinite(spread_N) or not drift_N:
+    if not math.isfinite(spread_N) or not drift_N:
         return None
     windows = np.lib.stride_tricks.sliding_window_view
     f = np.median(windows(force_N, w), axis=1)  # f[k]: the median of samples k to k + w - 1
     p = np.median(windows(pressure_bar, w), axis=1)
-    k = np.arange(start, stop)
-    steps = f[k] - f[k - w]
-    held = np.abs(p[k] - p[k - w]) <= ZERO_STEP_HELD_BAR
-    along = np.where(held, steps * math.copysign(1.0, drift_N), -np.inf)
-    best = int(np.argmax(along))
+    sign = math.copysign(1.0, drift_N)
     # the standard error of the difference of two medians of w samples (1.25 a mean's)
     se = 1.25 * spread_N * math.sqrt(2.0 / w)
-    step = float(steps[best])
-    # a step that large, made from one sample to the next (below), is no noise
-    if (along[best] < 20.0 * math.sqrt(2.0) * spread_N
-            or abs(step - drift_N) > 0.1 * abs(drift_N) + 4.0 * se):
-        return None
-    # the windows either side of the step straddle it from w samples before on: its first
-    # sample is the first past halfway
-    k0 = int(k[best]) - w + 1
-    past = (force_N[k0:k0 + 2 * w - 1] - f[k[best] - w] - step / 2.0) * math.copysign(1.0, step)
-    first = k0 + int(np.argmax(past > 0))
-    # a zero set anew steps from one sample to the next; a force that moves over several (a
-    # ramp's turn through its friction) is no such step
-    if abs(force_N[first] - force_N[first - 1] - step) > 0.1 * abs(step) + 4.0 * math.sqrt(
-            2.0) * spread_N:
-        return None
-    return first, step
+    for gap in range(ZERO_STEP_SMEAR_SAMPLES + 1):
+        # the windows before (from k - w) and after (from k + gap) the step
+        start, stop = max(within.start or 0, w), min(within.stop, force_N.size - w + 1) - gap
+        if stop <= start:
+            return None
+        k = np.arange(start, stop)
+        steps = f[k + gap] - f[k - w]
+        between = windows(p, w + gap + 1)[k - w]  # every window's median from one to the other
+        held = np.ptp(between, axis=1) <= ZERO_STEP_HELD_BAR
+        along = np.where(held, steps * sign, -np.inf)
+        best = int(np.argmax(along))
+        step = float(steps[best])
+        # a step that large is no noise
+        if (along[best] < 20.0 * math.sqrt(2.0) * spread_N
+                or abs(step - drift_N) > 0.1 * abs(drift_N) + 4.0 * se):
+            continue
+        lo, hi = int(k[best]) - w, int(k[best]) + gap + w
+        # each sample's way from the zero before to the one after, along the step; off either
+        # beyond its noise and a hundredth of the step (a filter's tail)
+        moved = (force_N[lo:hi] - f[lo]) * math.copysign(1.0, step)
+        off = 4.0 * spread_N + 0.01 * abs(step)
+        left = int(np.argmax(moved > off))  # the first sample off the zero before
+        below = np.flatnonzero(moved < abs(step) - off)
+        first = max(int(below[-1]) + 1 if below.size else 0, left)
+        return ZeroStep(lo + left, lo + first, step)
+    return None
 
 
 def settled_start(time_s: np.ndarray, force_N: np.ndarray) -> int | None:
@@ -404,10 +424,12 @@ def settle_for_cell(config, rest_std_N: float):
 
 
 def staircase_steps(time_s, pressure_bar, force_N, settle_config,
-                    held: list[Plateau] | None = None) -> tuple[list[StepRecord], np.ndarray]:
+                    held: list[Plateau] | None = None,
+                    unread: slice = slice(0, 0)) -> tuple[list[StepRecord], np.ndarray]:
     """The steps of a staircase (module docstring) and each sample's step (-1: between
     steps). ``settle_config``: a :class:`mkm.bench.config.BenchConfig` whose ``[settle]``
-    judges the plateaus; ``held``: its :func:`held_plateaus`, if found already."""
+    judges the plateaus; ``held``: its :func:`held_plateaus`, if found already; ``unread``:
+    samples in no hold's mean (a zero stepping through them, :func:`zero_step`)."""
     held = held_plateaus(time_s, pressure_bar) if held is None else held
     step_of = np.full(time_s.size, -1)
     records = []
@@ -418,7 +440,8 @@ def staircase_steps(time_s, pressure_bar, force_N, settle_config,
         settle_at, settled = _settle_index(t, f, p, q.level_bar, settle_config)
         hold = HoldStats()
         for j in range(settle_at, t.size):
-            hold.add(float(t[j]), float(f[j]), float(p[j]))
+            if not unread.start <= q.start + j < unread.stop:
+                hold.add(float(t[j]), float(f[j]), float(p[j]))
         key = (direction, round(q.level_bar, 2))
         repeats[key] = repeats.get(key, -1) + 1
         step_of[q.start:stop] = k
@@ -481,17 +504,19 @@ def _held_stop(p: np.ndarray, level_bar: float) -> int:
     return stop
 
 
-def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau]) -> list[StepRecord]:
+def untimed_staircase_steps(pressure_bar, force_N, held: list[Plateau],
+                            unread: slice = slice(0, 0)) -> list[StepRecord]:
     """The steps of a staircase recorded without its time (its rows the clock: ``held`` found
     with :data:`RECORD_PLATEAU_ROWS`). Without time the bench's settle test cannot judge a
     plateau: each is averaged over its second half, as a plateau that never settles is, its
-    start and end times unknown (NaN)."""
+    start and end times unknown (NaN); the rows ``unread`` in no mean."""
     records = []
     repeats: dict[tuple[str, float], int] = {}
     for k, (q, direction) in enumerate(zip(held, directions(pressure_bar, held), strict=True)):
         hold = HoldStats()
         for j in range((q.start + q.stop) // 2, q.stop):
-            hold.add(float(j), float(force_N[j]), float(pressure_bar[j]))
+            if not unread.start <= j < unread.stop:
+                hold.add(float(j), float(force_N[j]), float(pressure_bar[j]))
         key = (direction, round(q.level_bar, 2))
         repeats[key] = repeats.get(key, -1) + 1
         records.append(StepRecord(

@@ -260,6 +260,9 @@ class RawTable:
     properties: dict = field(default_factory=dict)
     #: what the reader warned of while reading a damaged file (npTDMS: a segment cut short)
     read_warnings: list[str] = field(default_factory=list)
+    #: a LabVIEW measurement file's segments that timed its rows (:func:`_lvm_times`): how
+    #: many, what told their starts, their Delta_X as written, the time between them unlogged
+    lvm_segments: dict = field(default_factory=dict)
     #: each row's file where several files were joined into this table (:func:`join_files`);
     #: empty for one file
     row_files: list[str] = field(default_factory=list)
@@ -313,7 +316,8 @@ class RawTable:
                 "footer_rows_skipped": self.footer_skipped,
                 **({"joined_by_time": self.joined} if self.joined else {}),
                 **({"tdms_properties": self.properties} if self.properties else {}),
-                **({"read_warnings": self.read_warnings} if self.read_warnings else {})}
+                **({"read_warnings": self.read_warnings} if self.read_warnings else {}),
+                **({"lvm_segments": self.lvm_segments} if self.lvm_segments else {})}
 
 
 def _column_letters(index: int) -> str:
@@ -417,10 +421,16 @@ def _text_table(path: Path, text: str) -> RawTable:
     # a row of separators only (";;;", as a spreadsheet exports its empty rows) is blank too
     parsed = [(n + j, cells) for n, line in lines
               for j, cells in enumerate(_cells(line, separator)) if any(c.strip() for c in cells)]
-    interval = None
+    interval, segments = None, {}
     if path.suffix.lower() == ".lvm":
         interval = _lvm_interval(parsed)
+        times, segments = _lvm_times(parsed)
         parsed = _without_later_lvm_headers(path, parsed)
+        if times:  # the x column LabVIEW would have written (X_Columns One)
+            heading = max(n for n, _ in parsed if n < min(times))
+            parsed = [(n, [repr(times[n]), *cells] if n in times else
+                       ["X_Value", *cells] if n == heading else cells)
+                      for n, cells in parsed]
     interval = interval or _labchart_interval(parsed)
     parsed = _labchart_header(path, parsed)
     decimal = _decimal(path, separator, [_ungrouped(c.strip()) for _, cells in parsed[1:200]
@@ -431,7 +441,7 @@ def _text_table(path: Path, text: str) -> RawTable:
     table = replace(table, preamble=[(n, line.strip()) for n, line in numbered
                                      if n < table.header_row])
     if path.suffix.lower() == ".lvm":
-        table = _without_empty_x_column(table)
+        table = replace(_without_empty_x_column(table), lvm_segments=segments)
     return replace(table, interval=interval) if interval else table
 
 
@@ -529,22 +539,111 @@ def _labchart_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float]
     return (f"Interval= {text}", seconds) if math.isfinite(seconds) and seconds > 0 else None
 
 
-def _lvm_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float] | None:
-    """The sampling interval a LabVIEW measurement file's channel header states (``Delta_X``,
-    one cell per channel, all alike, where ``X_Dimension`` is time), as written and in
-    seconds; None where it has none, several channel headers (segments, each with its own
-    ``X0``: the rows alone do not tell when each began) or one that is no positive time."""
-    labelled = [(cells[0].strip(), [c.strip() for c in cells[1:] if c.strip()])
-                for _, cells in parsed if cells]
-    deltas = [cells for label, cells in labelled if label == "Delta_X"]
-    dimensions = [cells for label, cells in labelled if label == "X_Dimension"]
-    if len(deltas) != 1 or len(dimensions) != 1 or len(set(deltas[0])) != 1 or \
-            {d.lower() for d in dimensions[0]} != {"time"}:
+@dataclass(frozen=True)
+class _LvmSegment:
+    """A LabVIEW measurement file's segment: its channel header's first ``X0`` and
+    ``Delta_X`` (as written), its start as ``Date`` and ``Time`` give it (a datetime, or
+    None), and its data rows' indices in the file's parsed rows."""
+    x0: str
+    delta_x: str
+    moment: datetime.datetime | None
+    rows: range
+
+
+def _lvm_segments(parsed: list[tuple[int, list[str]]]) -> list[_LvmSegment] | None:
+    """The segments of a LabVIEW measurement file whose channel headers each state a time
+    axis (``X_Dimension`` Time, one ``Delta_X`` for every channel); None where any does not."""
+    heads, block = [], None
+    for k, (_, cells) in enumerate(parsed):
+        label = cells[0].strip() if cells else ""
+        values = [c.strip() for c in cells[1:] if c.strip()]
+        if label == "Channels":
+            block = {"at": k}
+        elif block is not None and label == "***End_of_Header***":
+            heads.append((block, k + 2))  # after its heading
+            block = None
+        elif block is not None and values:
+            block[label] = values
+    out = []
+    for (block, first), (after, _) in zip(heads, [*heads[1:], ({"at": len(parsed)}, 0)],
+                                          strict=True):
+        deltas = set(block.get("Delta_X", []))
+        if {d.lower() for d in block.get("X_Dimension", [])} != {"time"} or len(deltas) != 1 \
+                or "X0" not in block:
+            return None
+        moment = _lvm_moment(block.get("Date", [""])[0], block.get("Time", [""])[0])
+        out.append(_LvmSegment(block["X0"][0], deltas.pop(), moment, range(first, after["at"])))
+    return out or None
+
+
+def _lvm_moment(day: str, clock: str) -> datetime.datetime | None:
+    """A LabVIEW measurement file's ``Date`` (``2026/12/05``) and ``Time`` (``09:15:00.1234567
+    890123``, its seconds to any number of digits) as one datetime; None where either is none."""
+    try:
+        hours, minutes, seconds = clock.split(":")
+        return datetime.datetime.strptime(day, "%Y/%m/%d") + datetime.timedelta(
+            hours=int(hours), minutes=int(minutes), seconds=float(seconds))
+    except ValueError:
         return None
-    seconds = plain_number(deltas[0][0], ".")
+
+
+def _lvm_interval(parsed: list[tuple[int, list[str]]]) -> tuple[str, float] | None:
+    """The sampling interval a LabVIEW measurement file's channel headers state (``Delta_X``,
+    one cell per channel, all alike, where ``X_Dimension`` is time), as written and in
+    seconds, where its rows follow on from each other: one segment, or segments each starting
+    one interval after the last row of the one before (:func:`_lvm_starts`). None where it has
+    none, segments whose times the rows alone do not tell (:func:`_lvm_times` gives them) or
+    one that is no positive time."""
+    segments = _lvm_segments(parsed)
+    if not segments or len({s.delta_x for s in segments}) != 1:
+        return None
+    seconds = plain_number(segments[0].delta_x, ".")
     if seconds is None or not (math.isfinite(seconds) and seconds > 0):
         return None
-    return f"Delta_X {deltas[0][0]}", seconds
+    starts = _lvm_starts(segments)
+    if len(segments) > 1 and (starts is None or any(
+            abs(later - start - seconds * len(a.rows)) > 0.5 * seconds
+            for a, start, later in zip(segments, starts, starts[1:], strict=False))):
+        return None
+    return f"Delta_X {segments[0].delta_x}", seconds
+
+
+def _lvm_starts(segments: list[_LvmSegment]) -> list[float] | None:
+    """Each segment's first sample [s] from the first's: by its ``X0`` where they differ,
+    else by its ``Date`` and ``Time`` (each segment's X0 alike from its own start); None where
+    neither tells."""
+    x0 = [plain_number(s.x0, ".") for s in segments]
+    if None not in x0 and len(set(x0)) > 1:
+        return [x - x0[0] for x in x0]
+    if any(s.moment is None for s in segments):
+        return None
+    return [(s.moment - segments[0].moment).total_seconds() for s in segments]
+
+
+def _lvm_times(parsed: list[tuple[int, list[str]]]) -> tuple[dict[int, float], dict]:
+    """A LabVIEW measurement file written without its x values (no ``X_Value`` heading) in
+    segments that do not follow on from each other (a pause between two writes): each data
+    row's time [s], by file row, its segment's start (:func:`_lvm_starts`) and ``Delta_X``
+    per row before it in the segment, and what timed them (:attr:`RawTable.lvm_segments`).
+    Empty where its rows are evenly spaced (:func:`_lvm_interval`), it has an x column or
+    its segments' starts are not told."""
+    segments = _lvm_segments(parsed)
+    if not segments or len(segments) < 2 or _lvm_interval(parsed) is not None or any(
+            cells and cells[0].strip() == "X_Value" for _, cells in parsed):
+        return {}, {}
+    starts = _lvm_starts(segments)
+    steps = [plain_number(s.delta_x, ".") for s in segments]
+    if starts is None or any(s is None or not (math.isfinite(s) and s > 0) for s in steps):
+        return {}, {}  # a record without time, as its rows are
+    ends = [start + step * len(s.rows) for s, start, step in zip(segments, starts, steps,
+                                                                  strict=True)]
+    x0 = {s.x0 for s in segments}
+    return {parsed[k][0]: start + step * j
+            for segment, start, step in zip(segments, starts, steps, strict=True)
+            for j, k in enumerate(segment.rows)}, {
+        "count": len(segments), "starts_from": "X0" if len(x0) > 1 else "Date and Time",
+        "delta_x": ", ".join(dict.fromkeys(s.delta_x for s in segments)),
+        "unlogged_s": float(sum(b - a for a, b in zip(ends, starts[1:], strict=False)))}
 
 
 def _labchart_header(path: Path,
@@ -2091,10 +2190,13 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     plain = _plain_numbers(raw, table.decimal)
     values = plain if plain is not None else np.empty(len(raw))
     inline: dict[str, int] = {}
+    grouped = plain is None and _points_group(table, column, raw)
     for k, cell in enumerate(raw if plain is None else ()):
         if optional and str(cell).strip() == "":
             values[k] = math.nan
             continue
+        if grouped and _POINT_GROUPED.match(str(cell).strip()):
+            cell = str(cell).strip().replace(".", "")
         number, unit = _number(cell, table.decimal)
         if number is None:
             formula = _formula(table, k, column.index) if cell == "" else None
@@ -2142,6 +2244,35 @@ def column_values(table: RawTable, column: Column, optional: bool = False) -> np
     if clock is not None:  # an Arduino's micros() or millis(): its 32-bit counter overflows
         values = _carried_on(values, float((CLOCK_WRAP * parse_unit(clock)).to("s").magnitude))
     return _carried_on(values, _DAY_S)
+
+
+#: a number grouped by points with no decimal mark ('250.000'): beside decimal commas, its
+#: thousands grouped or a decimal point (a column another program wrote)
+_POINT_GROUPED = re.compile(r"^[+-]?[1-9]\d{0,2}(\.\d{3})+$")
+
+
+def _points_group(table: RawTable, column: Column, raw: list) -> bool:
+    """Whether the points of a decimal-comma table's column group thousands ('250.000' beside
+    '1.048,96' or '12,5' in the column); False where it has none so written, or points that
+    are decimal points ('1.25'); ``ValueError`` naming the first such cell where every one
+    of the column's numbers with a point could be either."""
+    if table.decimal != ",":
+        return False
+    texts = [str(c).strip() for c in raw]
+    first = next((k for k, t in enumerate(texts) if _POINT_GROUPED.match(t)), None)
+    if first is None:
+        return False
+    if any(_COMMA_DECIMAL.match(t) or _GROUPED[","].match(t) for t in texts):
+        return True
+    if any("." in t and not _POINT_GROUPED.match(t) for t in texts):
+        return False
+    cell = texts[first]
+    raise ValueError(f"{table.where(first, column.index)} (column {column.header!r}): "
+                     f"{cell!r} in a table of decimal commas could be "
+                     f"{float(cell.replace('.', '')):g} with its thousands grouped or "
+                     f"{float(cell):g} with a decimal point, as could every number of the "
+                     "column with a point: expected the file saved without thousands "
+                     "separators (Excel: Format Cells, Number, no 1000 separator)")
 
 
 def _carried_on(seconds: np.ndarray, period_s: float) -> np.ndarray:
@@ -2858,6 +2989,10 @@ class Recognition:
             extras.append(f"{len(over)} row(s) with an overload mark skipped: "
                           + ", ".join(over[:5]) + (", ..." if len(over) > 5 else "")
                           + ": the channel read beyond its range there")
+        if lvm := self.table.lvm_segments:
+            extras.append(f"'Time [s]' from its {lvm['count']} segments' {lvm['starts_from']} "
+                          f"and Delta_X {lvm['delta_x']}, {lvm['unlogged_s']:.4g} s between "
+                          "them unlogged")
         if wave := self.table.properties.get("waveform"):
             extras.append(f"'Time [s]' from the channels' wf_increment, {wave['wf_increment']:g} "
                           "s")
@@ -3039,6 +3174,15 @@ def _check_declared_states(read: list[tuple[Path, RawTable, dict]]) -> None:
                                  f"{what}")
 
 
+#: a time column whose first reading is this far from 0 s (Unix time, seconds since 1970) is
+#: counted from its first row: a run folder's times stay within its cells' bound
+#: (:data:`mkm.bench.storage.MAX_CELL_MAGNITUDE`) and keep their milliseconds in 10 digits
+CLOCK_ORIGIN_S = 1e6
+#: such a first reading is said as the moment it is in Unix time between these [s] (2001 and
+#: 2100)
+UNIX_TIME_S = (1e9, 4.1e9)
+
+
 @dataclass
 class JoinedFiles:
     """Several files of one record read as one table (:func:`join_files`)."""
@@ -3053,6 +3197,9 @@ class JoinedFiles:
     clock: str
     #: how they were joined, in words
     note: str
+    #: the first reading of a continuing clock far from 0 s (:data:`CLOCK_ORIGIN_S`: Unix
+    #: time), from which the joined times count; None for any other clock
+    origin_s: float | None = None
 
 
 def _file_clock(table: RawTable, found: dict[str, Column]):
@@ -3135,6 +3282,7 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
     by_clock = sorted(range(len(read)), key=lambda k: start[k])
     overlap = next(((a, b) for a, b in itertools.pairwise(by_clock) if start[b] <= end[a]),
                    None)
+    origin_s = None
     if overlap is None:
         if between_files_s is not None:
             raise ValueError(f"--between-files {between_files_s:g} s: the files' clock "
@@ -3143,6 +3291,9 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
                              "restart")
         order, clock = by_clock, "continues"
         placed = [start[k] - start[by_clock[0]] for k in order]
+        if all(origin is None for _, origin in clocks) and \
+                abs(start[by_clock[0]]) >= CLOCK_ORIGIN_S:
+            origin_s = start[by_clock[0]]
         shift = [(clocks[k][1] or 0.0) - start[by_clock[0]] for k in order]
     elif all(origin is None and _own_start(times, None) for times, origin in clocks):
         order, clock = list(range(len(read))), "restarts"
@@ -3168,18 +3319,22 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
     for j, k in enumerate(order):
         path, table, found = read[k]
         times = clocks[k][0]
-        for row, t in zip(table.rows, times + shift[j], strict=True):
+        joined_s = times + shift[j]
+        if origin_s is not None:  # to the microsecond, a float's digits at Unix time
+            joined_s = np.round(joined_s, 6)
+        for row, t in zip(table.rows, joined_s, strict=True):
             row = list(row)
             row[index] = float(t)
             rows.append(row)
         numbers += table.row_numbers
         row_files += [path.name] * len(table.rows)
         files.append({"file": path.name, "sha256": file_sha256(path), "rows": len(table.rows),
-                      "clock_as_read_s": [float(times[0]), float(times[-1])],
-                      "placed_at_s": float(placed[j])})
+                      **_file_span(times, origin_s), "placed_at_s": float(placed[j])})
     names = [f["file"] for f in files]
     gaps = [placed[j + 1] - (placed[j] + clocks[order[j]][0][-1] - clocks[order[j]][0][0])
             for j in range(len(order) - 1)]
+    if origin_s is not None:
+        gaps = [round(g, 6) for g in gaps]
     # the level a hold keeps across each join (a logger rolling its file mid-hold), or None
     held = [_held_across(pressures[a], pressures[b]) for a, b in itertools.pairwise(order)]
     for j, (gap, level) in enumerate(zip(gaps, held, strict=True), start=1):
@@ -3226,7 +3381,20 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
     table = replace(first, source=source, rows=rows, row_numbers=numbers, row_files=row_files,
                     preamble=preamble)
     found = {**first_found, "time": Column("time", index, first_found["time"].header, "s")}
-    return JoinedFiles(table, found, files, clock, note)
+    return JoinedFiles(table, found, files, clock, note, origin_s)
+
+
+def _file_span(times: np.ndarray, origin_s: float | None) -> dict:
+    """A joined file's first and last time as read, or counted from ``origin_s`` (the joined
+    clock's first reading, :attr:`JoinedFiles.origin_s`) to the microsecond, a float's digits
+    at Unix time's 1.8e9 s, with its first reading's moment where that is Unix time."""
+    if origin_s is None:
+        return {"clock_as_read_s": [float(times[0]), float(times[-1])]}
+    span = {"clock_s": [round(float(t) - origin_s, 6) for t in (times[0], times[-1])]}
+    if UNIX_TIME_S[0] <= times[0] <= UNIX_TIME_S[1]:
+        span["first_row_utc"] = datetime.datetime.fromtimestamp(
+            float(times[0]), datetime.UTC).isoformat(timespec="milliseconds")
+    return span
 
 
 #: the samples at each side of a join whose pressures judge whether it falls within a hold

@@ -931,6 +931,74 @@ def test_a_load_cell_zeroed_again_mid_record_is_tared_at_each_zero(tmp_path, mkm
             1 / np.sqrt(hold.n) + 1 / np.sqrt(50))), hold
 
 
+@pytest.mark.parametrize("logged", ["without its time", "through a 5-reading average"])
+def test_a_load_cell_zeroed_again_without_times_or_smeared_is_tared_at_each_zero(logged,
+                                                                               tmp_path,
+                                                                               mkm_cli):
+    # the tare pressed at 25 s with the muscle held at 2 bar, as above. Logged without its time
+    # column the falling steps were 817 N low without a word; through a display's average of 5
+    # readings (the step a line over 0.5 s) it was told a drift, every step keeping the start's
+    # zero and --tare linear offered
+    t, p, f, truth = _staircase_10_hz([1.0, 2.0, 2.5, 2.0, 1.0, 0.0], tare_N=3.0)
+    pull_N = float(np.mean(truth[(t >= 24.0) & (t < 25.0)]))
+    timed = logged != "without its time"
+    # a moving average of 5 readings: the new zero's share 1/5 at 25.1 s ... 5/5 at 25.5 s
+    share = np.clip((t - 25.0) / 0.5, 0.0, 1.0) if timed else (t >= 25.0)
+    path = tmp_path / "rezeroed.csv"
+    pd.DataFrame({"Time [s]": t, "P [bar]": p, "F [N]": f - (3.0 + pull_N) * share}).drop(
+        columns=[] if timed else ["Time [s]"]).to_csv(path, index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    step = run.meta.imported_from["zero_step"]
+    assert step["step_N"] == pytest.approx(-3.0 - pull_N, abs=4 * 0.16)  # as above
+    if timed:
+        # the readings at 25.1-25.4 s part way, file rows 253-256; from 25.5 s (C257) the new
+        # zero
+        assert step["at_s"] == pytest.approx(25.5) and step["cell"] == "C257"
+        assert step["spread_samples"] == 4
+        assert ("at 2 bar, as far as the force vented at the end reads from the zero at the "
+                "start: the load cell zeroed again there") in err
+        assert ("over 0.5 s from 25 s to 25.5 s (cells C253 to C257) while the pressure holds "
+                "at 2 bar") in err and "the 4 sample(s) between read it part way" in err
+    else:
+        assert "at_s" not in step and step["cell"] == "B252" and step["spread_samples"] == 0
+        assert (f"the force steps by {step['step_N']:+.4g} N at cell B252 while the pressure "
+                "holds at 2 bar") in err, err
+    assert "--tare linear" not in err
+    # every step its muscle's force, within 4 standard errors of its mean and the rest's
+    # (0.2 N noise; a record without time averages each plateau's second half) and the 0.2 N a
+    # hold's edge takes in
+    assert len(run.steps) == 5
+    holds = [(t >= 6.0) & (t < 18.0), (t >= 19.0) & (t < 31.0), (t >= 32.0) & (t < 44.0),
+             (t >= 45.0) & (t < 57.0), (t >= 58.0) & (t < 70.0)]
+    for hold, inside in zip(run.steps.itertuples(), holds, strict=True):
+        assert hold.force_N_mean == pytest.approx(truth[inside][-hold.n:].mean(), abs=0.2 + 4 * (
+            0.2 / np.sqrt(hold.n) + 0.2 / np.sqrt(49))), hold
+
+
+@pytest.mark.parametrize("row", [2, 5, 7, 9])
+def test_a_step_table_whose_load_cell_was_zeroed_again_at_a_row_is_tared_at_each_zero(
+        row, tmp_path, mkm_cli):
+    # a table of one row per held pressure whose cell was tared again at a hold before its row
+    # was written (the row reads 0 N, every row after it the pull there low): it was told a
+    # drift of the closing 0 bar row, every falling step up to 1049 N low
+    pressures = np.array([0, 0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.5, 1.0, 0.5, 0])
+    force = thickwall_N(pressures, 0.0) * np.r_[1, 1, 1, 1, 1, 1, 1.04, 1.04, 1.04, 1.04, 1]
+    logged = force + 3.0 - np.where(np.arange(11) >= row, force[row] + 3.0, 0.0)
+    path = tmp_path / "steps.csv"
+    pd.DataFrame({"Druck [bar]": pressures, "Kraft [N]": logged.round(2)}).to_csv(
+        path, sep=";", decimal=",", index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    cell = f"B{row + 2}"
+    assert run.meta.imported_from["zero_step"] == {
+        "cell": cell, "step_N": pytest.approx(-force[row] - 3.0, abs=0.01),
+        "pressure_bar": pressures[row]}
+    assert (f"and with the rows from {cell} ({pressures[row]:g} bar) on tared at theirs every "
+            "force follows its pressure from row to row, the least up and down of any row's: the "
+            "load cell zeroed again there") in err, err
+    # every row its muscle's force, to the file's 0.01 N
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, atol=0.01)
+
+
 @pytest.mark.parametrize("closing_N, accuracy, said", [
     (0.8, [], True), (0.3, [], False), (-0.8, [], True),
     (0.8, ["--accuracy", "force=0.5N+1%"], False),  # within twice the declared 0.5 N
@@ -1673,6 +1741,8 @@ def test_a_clocks_zone_or_origin_is_read_and_its_unix_time_counted_from_the_star
     # time to 0.2 us)
     np.testing.assert_allclose(run.samples["time_s"], t, atol=5e-4)
     assert run.meta.imported_from.get("time_origin_s") == origin_s
+    assert run.meta.imported_from.get("record_started_utc") == (
+        "2026-11-30T00:53:20.000+00:00" if origin_s else None)
     assert ((f"{header!r} counted from its first row, 1796000000 s (Unix time, 2026-11-30 "
              "00:53:20 UTC)") in err) is (origin_s is not None)
     _scores(tmp_path, [run])  # read back by mkm report
@@ -1711,6 +1781,52 @@ def test_a_labview_file_without_its_times_is_timed_by_its_delta_x(x_columns, hea
     assert recorded["shape"] == "staircase"
     np.testing.assert_allclose(run.samples["time_s"], t, atol=1e-9)
     # the holds' levels and forces as written (6 digits of kPa and kN), timed by the settle test
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
+    np.testing.assert_allclose(run.steps["force_N_mean"], thickwall_N([1.0, 2.0, 2.5], 0.0),
+                               rtol=1e-5)
+
+
+@pytest.mark.parametrize("starts, pause_s", [("X0", 0.0), ("X0", 2.0), ("Date and Time", 2.0)])
+def test_a_labview_file_of_segments_without_its_times_is_timed_by_each_segment(
+        starts, pause_s, tmp_path, mkm_cli):
+    # LabVIEW's Write To Measurement File called every 10 s (One header per segment, X Value
+    # Columns No): each segment's channel header holds its start (its X0 from the file's Time,
+    # or its own Date and Time with every X0 0) and Delta_X. Read as a record without time, its
+    # rows untimed ('if its rows were logged at a known rate, --sample-rate HZ times them'),
+    # and with a pause between writes every later hold shifted by the time not logged
+    t = np.arange(0.0, 60.0, 0.1)
+    p = np.interp(t, [0, 5, 6, 16, 17, 27, 28, 38, 39, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.5, 2.5, 0.0, 0.0])
+    force = thickwall_N(p, 0.0)
+    logged_s = t + pause_s * (t // 10.0)  # each segment of 100 rows written pause_s later
+    text = ("LabVIEW Measurement\t\nWriter_Version\t2\nReader_Version\t2\nSeparator\tTab\n"
+            "Decimal_Separator\t.\nMultiple_Headers\tYes\nX_Columns\tNo\nTime_Pref\tRelative\n"
+            "Date\t2026/12/05\nTime\t09:15:00.0000000000000000\n***End_of_Header***\t\n\t\n")
+    for j in range(0, t.size, 100):
+        x0 = logged_s[j] if starts == "X0" else 0.0
+        clock = f"09:{15 + int(logged_s[j]) // 60}:{logged_s[j] % 60:019.16f}"
+        text += (f"Channels\t2\t\t\nSamples\t100\t100\t\nDate\t2026/12/05\t2026/12/05\t\n"
+                 f"Time\t{clock}\t{clock}\t\nY_Unit_Label\tkPa\tkN\t\n"
+                 f"X_Dimension\tTime\tTime\t\nX0\t{x0:.16E}\t{x0:.16E}\t\n"
+                 "Delta_X\t0.100000\t0.100000\t\n***End_of_Header***\t\t\t\n"
+                 "Druck\tKraft\tComment\n" + "".join(
+                     f"{a * 100:.6f}\t{b / 1000:.6f}\t\n"
+                     for a, b in zip(p[j:j + 100], force[j:j + 100], strict=True)))
+    path = tmp_path / "segments.lvm"
+    path.write_text(text, encoding="utf-8")
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    if pause_s:
+        assert ("'Time [s]' -> time [s], 'Druck [kPa]' -> pressure [kPa -> bar], 'Kraft [kN]' "
+                f"-> force [kN -> N]; 20 title row(s) skipped, 'Time [s]' from its 6 segments' "
+                f"{starts} and Delta_X 0.100000, 10 s between them unlogged") in err, err
+        assert run.meta.imported_from["lvm_segments"] == {
+            "count": 6, "starts_from": starts, "delta_x": "0.100000",
+            "unlogged_s": pytest.approx(10.0)}
+    else:
+        assert "rows at 10 Hz by the header's Delta_X 0.100000" in err, err
+    # every row at its time, to the X0's 17 digits and Time's 16 decimals
+    np.testing.assert_allclose(run.samples["time_s"], logged_s, atol=1e-9)
+    assert run.meta.imported_from["shape"] == "staircase"
     np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 2.5], atol=1e-9)
     np.testing.assert_allclose(run.steps["force_N_mean"], thickwall_N([1.0, 2.0, 2.5], 0.0),
                                rtol=1e-5)
@@ -3104,17 +3220,43 @@ def test_a_record_logged_a_file_per_step_imports_as_one_run(tmp_path, mkm_cli):
         STEP_FILE_LEVELS[1:-1], abs=0.01)
 
 
-def test_files_whose_clock_continues_are_ordered_by_it(tmp_path, mkm_cli):
+@pytest.mark.parametrize("unix", [False, True])
+def test_files_whose_clock_continues_are_ordered_by_it(unix, tmp_path, mkm_cli):
     # given out of order, the clock the files share orders them and keeps the time between
-    # them as logged
+    # them as logged. In Unix time (seconds since 1970, to the millisecond) each file's clock
+    # was kept as read in imported_from (1796000003-1796000019.9 s), and nothing said when
+    # the record began
     files, clock, _ = _files_per_step(tmp_path / "LM8", clock_restarts=False)
+    if unix:
+        for path in files:
+            lines = path.read_text().splitlines(keepends=True)
+            frame = pd.read_csv(path, comment="#")
+            frame["Time [s]"] = [f"{1796000000 + t:.3f}" for t in frame["Time [s]"]]
+            path.write_text("".join(lines[:2]) + frame.rename(
+                columns={"Time [s]": "Timestamp (s since epoch)"}).to_csv(index=False))
     shuffled = [files[k] for k in (3, 0, 10, 1, 2, 4, 5, 6, 7, 8, 9)]
     (run,), err = _import(mkm_cli, shuffled[0], *map(str, shuffled[1:]), *MUSCLE, "--eps", "0")
-    assert run.meta.imported_from["clock"] == "continues"
-    assert [f["file"] for f in run.meta.imported_from["files"]] == [f.name for f in files]
+    recorded = run.meta.imported_from
+    assert recorded["clock"] == "continues"
+    assert [f["file"] for f in recorded["files"]] == [f.name for f in files]
+    # the record's own clock from its first logged sample, to the microsecond at Unix time
     assert run.samples["time_s"].to_numpy() == pytest.approx(clock - UNLOGGED_S, abs=1e-9)
     assert ("11 files joined on their clock, which continues from one to the next: ordered by "
             "it, step0.csv first, the time between files as logged (3.1-3.1 s)") in err
+    assert [f["join"]["gap_s"] for f in recorded["files"][1:]] == pytest.approx([3.1] * 10,
+                                                                                abs=1e-9)
+    if not unix:
+        assert recorded["files"][1]["clock_as_read_s"] == pytest.approx([23.0, 39.9])
+        assert "time_origin_s" not in recorded
+        return
+    # each file's span on the run's clock, from 0, and its first row's moment
+    assert recorded["files"][1]["clock_s"] == [20.0, 36.9]
+    assert recorded["files"][1]["first_row_utc"] == "2026-11-30T00:53:43.000+00:00"
+    assert recorded["time_origin_s"] == 1796000003.0
+    assert recorded["record_started_utc"] == "2026-11-30T00:53:23.000+00:00"
+    assert not any("clock_as_read_s" in f for f in recorded["files"])
+    assert ("'Timestamp (s since epoch)' counted from the first row of step0.csv, 1796000003 s "
+            "(Unix time, 2026-11-30 00:53:23 UTC)") in err, err
 
 
 def test_files_of_date_times_are_ordered_and_refused_by_them(tmp_path, mkm_cli):

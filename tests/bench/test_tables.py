@@ -483,6 +483,27 @@ def test_thousands_grouped_beside_a_decimal_mark(tmp_path):
     np.testing.assert_allclose(column_values(table, found["force"]), [250.5, 1234.5])
 
 
+def test_points_grouping_thousands_beside_decimal_commas_are_told_from_decimal_points(
+        tmp_path):
+    # a German export of pressures in Pa grouped by points ('250.000' beside '125.000,5'):
+    # '250.000' was read as 250 Pa, a decimal point, every such pressure 1000 times too low
+    table, found = _one(tmp_path, "Druck [Pa];Kraft [N]\n0;0\n50.000;209,79\n"
+                        "125.000,5;1.048,96\n250.000;839,17\n", "de.csv")
+    np.testing.assert_allclose(column_values(table, found["pressure"]),
+                               [0.0, 0.5, 1.250005, 2.5], rtol=1e-15)
+    # a column whose every number with a point could be either: neither is guessed
+    table, found = _one(tmp_path, "Druck [Pa];Kraft [N]\n0;0\n50.000;209,79\n"
+                        "250.000;1.048,96\n", "ambiguous.csv")
+    with pytest.raises(ValueError, match=re.escape(
+            "ambiguous.csv, cell A3 (column 'Druck [Pa]'): '50.000' in a table of decimal "
+            "commas could be 50000 with its thousands grouped or 50 with a decimal point, as "
+            "could every number of the column with a point: expected the file saved without "
+            "thousands separators")):
+        column_values(table, found["pressure"])
+    # beside a decimal point written as such ('1.25'), '12.634' is one too
+    table, found = _one(tmp_path, "P [bar];F [N]\n1,5;1.25\n2,5;12.634\n", "mixed.csv")
+    np.testing.assert_allclose(column_values(table, found["force"]), [1.25, 12.634])
+
 @pytest.mark.parametrize("mark", ["'", "\u2019", "\u2009", "\u202f", "\u00a0"])
 def test_thousands_grouped_by_an_apostrophe_or_a_space(mark, tmp_path):
     # a Swiss spreadsheet's 1'234.5, a French one's 1 234,5 (a thin or no-break space): were
