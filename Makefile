@@ -17,17 +17,21 @@ PACKAGE_DIRS := $(shell find mkm bench fem surrogate -type d -not -name __pycach
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip "uv>=0.13"
+	$(BIN)/python -m pip install --quiet --upgrade pip
 
-$(VENV)/.installed: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/python
+# (its own target: a .venv made before it was used gets it too)
+$(BIN)/uv: | $(BIN)/python
+	$(BIN)/python -m pip install --quiet "uv>=0.13"
+
+$(VENV)/.installed: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/uv
 	$(PIP_INSTALL) $(EDITABLE) .
 	touch $@
 
-$(VENV)/.installed-docs: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/python
+$(VENV)/.installed-docs: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/uv
 	$(PIP_INSTALL) $(EDITABLE) ".[docs]"
 	touch $@ $(VENV)/.installed
 
-$(VENV)/.installed-test: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/python
+$(VENV)/.installed-test: pyproject.toml $(PACKAGE_DIRS) | $(BIN)/uv
 	$(PIP_INSTALL) $(EDITABLE) ".[test]"
 	touch $@ $(VENV)/.installed
 
