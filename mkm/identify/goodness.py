@@ -30,7 +30,8 @@ model does not have) biases the estimate as well, which the warning line says.
 
 A step table without a declared accuracy has one value per step; where its sweeps repeat its
 pressures, the scatter of the repeats' residuals is its noise (:func:`repeat_noise`), estimated,
-so its branches are judged by an F test (:func:`_from_repeats`).
+so its branches are judged by an F test (:func:`_from_repeats`); its steps are what the fit
+minimised, one value each, so there the parameters take their degrees of freedom.
 
 The bench's instrument tolerances (the load cell's gain, the monitor's accuracy) are not noise
 here: they are errors the data share, and a fit that cannot absorb them shows them as misfit.
@@ -286,7 +287,9 @@ class Goodness:
                                       "of its steps repeated on one branch within "
                                       f"{REPEAT_BAND_BAR:g} bar, judged by an F test of the "
                                       "repeats' means against it (at least "
-                                      f"{REPEAT_MIN_DOF} degrees of freedom)"}
+                                      f"{REPEAT_MIN_DOF} degrees of freedom), the means' "
+                                      "degrees of freedom their number less the fit's "
+                                      "leverage on them"}
                    if self.repeats else {}),
                 "branches": [b.record() for b in self.branches]}
 
@@ -338,6 +341,7 @@ def assess(runs, fit) -> Goodness:
                           minlength=n_steps)
     scatter2 = squares / np.maximum(counts - 1, 1) / np.maximum(counts, 1)
     measured = np.bincount(fit.cluster, fit.measured_N, minlength=n_steps) / np.maximum(counts, 1)
+    taken = None  # each step's leverage in the fit, where a table's repeats judge it
     branches, offset, left_out, slack, repeats, too_few = [], 0, [], [], [], []
     zero_N = fit.values.get("force_zero_N", 0.0)
     for k, run in enumerate(runs):
@@ -377,9 +381,11 @@ def assess(runs, fit) -> Goodness:
                 chi2, nu = chi_square(r, s, tare), float(pick.sum())
                 p, p_chi2 = float(stats.chi2.sf(chi2, nu)), None
             else:
+                if taken is None:
+                    taken = np.bincount(fit.cluster, leverages(fit), minlength=n_steps)
                 chi2, nu, p, p_chi2 = _from_repeats(mean[here], repeated, [
                     g for g in repeat_groups(steps, usable)
-                    if steps["direction"].iloc[int(g[0])] == direction], tare)
+                    if steps["direction"].iloc[int(g[0])] == direction], tare, taken[here])
             order = np.argsort(steps["pressure_bar_mean"].to_numpy()[pick], kind="stable")
             n_runs, runs_p = runs_test(r[order])
             branches.append(Branch(
@@ -457,20 +463,37 @@ def repeat_noise(name: str, steps, residual: np.ndarray, usable: np.ndarray) -> 
                    sum(g.size for g in groups), len(groups))
 
 
-def _from_repeats(residual, repeats: Repeats, groups, tare: float):
+def leverages(fit) -> np.ndarray:
+    """Each residual's leverage in ``fit``: the diagonal of the weighted least-squares hat matrix
+    of its Jacobian (the share of a residual's own noise the fitted parameters take up; they
+    sum to the parameters' number, the Jacobian's rank)."""
+    jacobian = fit.weighted_jacobian
+    if jacobian.size == 0:
+        return np.zeros(fit.n)
+    u, singular, _ = np.linalg.svd(jacobian, full_matrices=False)
+    rank = int(np.sum(singular > singular.max(initial=0.0) * max(jacobian.shape) *
+                      np.finfo(float).eps))
+    return np.sum(u[:, :rank] ** 2, axis=1)
+
+
+def _from_repeats(residual, repeats: Repeats, groups, tare: float, taken: np.ndarray):
     """A branch's chi-square, degrees of freedom, p-value and the chi-square as probable, judged
     against a noise its repeats measured: the groups' mean residuals against the repeats' noise
-    over root n (and the tare every step shares), a chi-square over the groups' number ``G``
-    that is ``G`` F(G, dof) distributed where the model fits (the noise estimated, not known).
-    The chi-square itself measures the misfit (the Birge ratio widens by it); its p-value is
-    the F test's, and the chi-square of ``G`` degrees of freedom as probable is what all
-    branches' p-value adds."""
+    over root n (and the tare every step shares), a chi-square of ``G`` groups less what the
+    fit took of them (``taken``: each step's leverage, :func:`leverages`; the fit minimised
+    these very steps' residuals, so its parameters take their degrees of freedom, shared out
+    among the branches by their leverages), ``nu`` F(nu, dof) distributed where the model fits
+    (the noise estimated, not known). The chi-square itself measures the misfit (the Birge ratio
+    widens by it); its p-value is the F test's, and the chi-square of ``nu`` degrees of freedom
+    as probable is what all branches' p-value adds."""
     means = np.array([residual[g].mean() for g in groups])
     spread = max(repeats.noise_N, 1e-12) / np.sqrt([g.size for g in groups])
-    chi2, n = chi_square(means, spread, tare), len(groups)
-    p = float(stats.f.sf(chi2 / n, n, repeats.dof))
+    chi2 = chi_square(means, spread, tare)
+    # a floor of a tenth of a group: a branch whose every step the fit follows exactly
+    nu = max(len(groups) - float(sum(np.sum(taken[g]) for g in groups)), 0.1)
+    p = float(stats.f.sf(chi2 / nu, nu, repeats.dof))
     # beyond the F tail's floating point the chi-square itself, larger still
-    return chi2, float(n), p, (float(stats.chi2.isf(p, n)) if p > 0 else chi2)
+    return chi2, nu, p, (float(stats.chi2.isf(p, nu)) if p > 0 else chi2)
 
 
 #: what runs show that a fit may leave out, by the ``--params`` group that fits it

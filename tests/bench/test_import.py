@@ -559,13 +559,14 @@ def _tdms(path: Path, *segments, properties=None):
     return path
 
 
-def _staircase_10_hz(levels_bar, tare_N, seed=2):
+def _staircase_10_hz(levels_bar, tare_N, seed=2, hold_s=12.0):
     """A 10 Hz record as the USB-6001 logs it: 5 s vented (the tare), then per level a 1 s
-    ramp and 12 s held; the load cell reads ``tare_N`` unloaded; noise 0.003 bar and 0.2 N."""
+    ramp and ``hold_s`` held; the load cell reads ``tare_N`` unloaded; noise 0.003 bar and
+    0.2 N."""
     rng = np.random.default_rng(seed)
     knots_t, knots_p = [0.0, 5.0], [0.0, 0.0]
     for level in levels_bar:
-        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 13.0]
+        knots_t += [knots_t[-1] + 1.0, knots_t[-1] + 1.0 + hold_s]
         knots_p += [level, level]
     t = np.arange(0.0, knots_t[-1], 0.1)
     p = np.interp(t, knots_t, knots_p)
@@ -3525,17 +3526,20 @@ def test_a_workbooks_sheets_each_declaring_their_eps_are_runs_of_their_own(tmp_p
     assert _scores(tmp_path, runs)["max_abs_err_pct"].max() < 0.01
 
 
-def _rolled_files(folder: Path, clock: str, lost_s: float = 0.0):
-    """A 10 Hz staircase (0.5-1.5-0.5 bar) logged by a logger that rolls its file every 37 s,
-    the join within the 1.5 bar hold (32-44 s): each file's clock restarting at 0
-    (``restart``) or date-times going on (``date``), ``lost_s`` of samples lost at the join;
-    the files and the whole record as one file."""
-    t, p, force, _ = _staircase_10_hz([0.5, 1.0, 1.5, 1.0, 0.5], tare_N=2.0)
+def _rolled_files(folder: Path, clock: str, lost_s: float = 0.0,
+                  levels_bar=(0.5, 1.0, 1.5, 1.0, 0.5), hold_s: float = 12.0,
+                  roll_s: float = 37.0):
+    """A 10 Hz staircase (0.5-1.5-0.5 bar, each level held ``hold_s``) logged by a logger that
+    rolls its file after ``roll_s`` (37 s: within the 1.5 bar hold, 32-44 s): each file's
+    clock restarting at 0 (``restart``) or date-times going on (``date``), ``lost_s`` of
+    samples lost at the join; the files and the whole record as one file."""
+    t, p, force, _ = _staircase_10_hz(list(levels_bar), tare_N=2.0, hold_s=hold_s)
     folder.mkdir()
     start = datetime.datetime(2026, 12, 5, 14, 5, 0)
     whole = pd.DataFrame({"Zeit [s]": np.round(t, 1), "Druck [bar]": p, "Kraft [N]": force})
     whole.to_csv(folder / "whole.csv", index=False)
-    parts = [slice(0, 370), slice(370 + round(10 * lost_s), None)]
+    cut = round(10 * roll_s)
+    parts = [slice(0, cut), slice(cut + round(10 * lost_s), None)]
     for k, part in enumerate(parts, start=1):
         frame = whole.iloc[part].copy()
         if clock == "restart":
@@ -3547,21 +3551,30 @@ def _rolled_files(folder: Path, clock: str, lost_s: float = 0.0):
     return folder
 
 
-def test_a_file_rolled_mid_hold_is_joined_as_one_hold(tmp_path, mkm_cli):
+@pytest.mark.parametrize(("staircase", "join_bar"), [
+    ({}, 1.5),
+    # a fresh draw of promises20 (seed 2026120761, draw 1) whose last step held one sample
+    # fewer than the whole record's: the second file's times, placed by a sum, came one ulp
+    # short of the record's (49.199999999999996 s for 49.2 s), and the settle test, checking
+    # once a second, passed the sample it was due at
+    ({"levels_bar": (2.5, 1.25, 0.25, 0.75, 0.25), "hold_s": 9.78, "roll_s": 41.4}, 0.75)])
+def test_a_file_rolled_mid_hold_is_joined_as_one_hold(staircase, join_bar, tmp_path, mkm_cli):
     # each file's clock restarts at 0, the second file's first samples the hold the first's
     # ended in: said as one hold joined, where the line said 'its step taken as the file
     # begins: each hold's creep timed from its file's start', a file per step's reading
-    folder = _rolled_files(tmp_path / "LM30", "restart")
+    folder = _rolled_files(tmp_path / "LM30", "restart", **staircase)
     (run,), err = _import(mkm_cli, folder / "log_*.csv", *MUSCLE, "--eps", "0")
     assert "its step taken as the file begins" not in err
     assert ("1 of the 1 joins within a hold (the pressure at one level across each, as a logger "
             "that rolls its file every few minutes writes it: log_002.csv), each joined as one "
             "hold, any time lost between the files unknown") in err
     join = run.meta.imported_from["files"][1]["join"]
-    assert join["within_hold_bar"] == pytest.approx(1.5, abs=0.003)  # the gauge's noise
+    assert join["within_hold_bar"] == pytest.approx(join_bar, abs=0.003)  # the gauge's noise
     # one sample apart, the clock goes on as logged: the steps of the whole record, each
+    # with the same samples
     (whole,), _ = _import(mkm_cli, folder / "whole.csv", *MUSCLE, "--eps", "0")
-    columns = ["pressure_bar_mean", "force_N_mean", "start_s", "end_s"]
+    assert run.steps["n"].tolist() == whole.steps["n"].tolist()
+    columns = ["pressure_bar_mean", "force_N_mean", "start_s", "end_s", "settle_s"]
     np.testing.assert_allclose(run.steps[columns], whole.steps[columns], rtol=1e-9,
                                atol=1e-6)
 
