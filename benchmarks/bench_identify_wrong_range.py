@@ -346,6 +346,8 @@ def first_said(verdict: str | None) -> str:
         return "-"
     first = verdict.split(marks[0])[1]
     for key, said in (("trails the pressure", "lag"),
+                      ("or a yielding frame or stretching fibres", "braid, frame or fibres"),
+                      ("a yielding frame or stretching fibres", "frame or fibres"),
                       ("or a braid whose fibres stretch", "braid or fibres"),
                       ("fibres stretch", "fibres"),
                       ("braid (the braid, creep", "braid or frame"),

@@ -128,6 +128,12 @@ FRAME_EPS_STEP = 0.01
 #: a frame is named where fitting its compliance takes away at least this share of the misfit's
 #: chi-square excess over its degrees of freedom (and more than a rest length declared wrong)
 FRAME_TAKES = 0.5
+#: a frame and fibres are both named where the chi-square each lowers differs by less than this
+#: many times the fit's chi2/nu (:func:`frame_or_fibres`): the 95 % point of the chi-square of
+#: one degree of freedom, the difference two fits one parameter apart show on noise alone, with
+#: the misfit taken for noise the fit's chi2/nu times larger, as the intervals' Birge widening
+#: takes it (the linearised refits' own chi2/nu leaves out the model error the misfit is made of)
+FRAME_OR_FIBRES_CHI2 = 3.84
 #: the lag [s] the force's sensitivity to a tubing lag is differenced over (:func:`lag_hint`):
 #: the middle of a bench's 0.2-2 s, over which a ramp's force is near linear in its pressure
 LAG_STEP_S = 0.5
@@ -831,6 +837,10 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
     is small: where the fibres lower the chi-square more than the frame, on the frame's terms,
     they are named instead, in ``fitness.fibres`` (their strain at the largest tension, E A,
     the note and the refit's ``shift``, the model-form term ``fibres``), and the frame is not.
+    Where the two lower it within :data:`FRAME_OR_FIBRES_CHI2` times the fit's chi2/nu of each
+    other, the data do not tell them apart and both are named (:func:`frame_or_fibres`), each
+    record ``told_from_*`` False, the threshold ``frame_check``'s
+    ``frame_or_fibres_within_chi2``.
     """
     if not fitness.misfit or not fitness.judged:
         return None
@@ -888,11 +898,32 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
         **({} if fibres is None else
            {"fibre_strain_at_largest_tension": float(f"{strain:.3g}"),
             "fibres_chi2_lowered": round(float(fibres_lowered), 3)}))
-    if fibres is not None and (strain > 0 and base > fitness.nu and fibres_lowered >= max(
-            FRAME_TAKES * (base - fitness.nu), lowered) and fibres_lowered > rest_lowered):
+    named = frame_or_fibres(
+        {"frame": lowered if at_top > 0 else -math.inf,
+         "fibres": fibres_lowered if fibres is not None and strain > 0 else -math.inf},
+        rest_lowered, base, fitness)
+    tied = len(named) == 2
+    if tied:
+        fitness.frame_check["frame_or_fibres_within_chi2"] = round(
+            float(FRAME_OR_FIBRES_CHI2 * fitness.reduced), 3)
+    table = published_table(runs)
+    if "fibres" in named:
         rest_said = ("" if "L0_mm" in best.names else
                      f" and a rest length declared wrong by {rest_lowered:.3g}")
         within = with_fibres <= fitness.nu
+        check = ("check the frame's stiffness and measure the fibres (a strand's force over its "
+                 "strain, times the strands), then identify again" if table is None else
+                 f"{table} was measured on its authors' bench and braid: ask them for their "
+                 "frame's stiffness and their braid's fibres, else predict with the intervals")
+        apart = (f"; they lower it within {FRAME_OR_FIBRES_CHI2 * fitness.reduced:.3g} of each "
+                 f"other ({FRAME_OR_FIBRES_CHI2:g} times the fit's chi2/nu), so the data do not "
+                 "tell the fibres from the frame (the note above): the intervals hold the "
+                 f"muscle fitted with either (the model-form terms frame and fibres); {check}"
+                 if tied else
+                 "; the intervals hold the muscle fitted with it (the model-form term fibres); "
+                 "measure the braid's fibres (a strand's force over its strain, times the "
+                 "strands) or use a stiffer braid, and check the frame's stiffness, then "
+                 "identify again")
         fitness.fibres = {
             "strain_at_largest_tension": float(f"{strain:.3g}"),
             "largest_tension_N": float(f"{top_tension_N:.4g}"),
@@ -902,6 +933,7 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
             "frame_chi2_lowered": round(float(lowered), 3),
             **({} if "L0_mm" in best.names else
                {"rest_length_chi2_lowered": round(float(rest_lowered), 3)}),
+            **({"told_from_frame": False} if tied else {}),
             "said": (f"fibres: the braid's fibres stretching under their tension (about "
                      f"{100 * float(f'{strain:.3g}'):.2g} % at the largest, "
                      f"{top_tension_N:.4g} N along them all: E A about "
@@ -910,22 +942,16 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
                      f"fitting that (linearised) lowers chi2 by {fibres_lowered:.3g} "
                      f"(chi2/nu {with_fibres / fitness.nu:.3g}"
                      f"{', within the noise' if within else ''}), where a frame yielding under "
-                     f"the pull lowers it by {lowered:.3g}{rest_said}; the intervals hold the "
-                     "muscle fitted with it (the model-form term fibres); measure the braid's "
-                     "fibres (a strand's force over its strain, times the strands) or use a "
-                     "stiffer braid, and check the frame's stiffness, then identify again"),
+                     f"the pull lowers it by {lowered:.3g}{rest_said}{apart}"),
             "shift": {n: float(v) for n, v in zip(
                 best.names, _step(best, strain / FRAME_EPS_STEP * column), strict=True)}}
-        return None
-    if not (at_top > 0 and base > fitness.nu and lowered >= FRAME_TAKES * (base - fitness.nu)
-            and lowered > rest_lowered):
+    if "frame" not in named:
         return None
     stiffness = 1.0 / compliance
     within = with_frame <= fitness.nu
     rest_said = ("" if "L0_mm" in best.names else
                  f", where a rest length declared wrong lowers it by {rest_lowered:.3g}")
     shift = _step(best, at_top / FRAME_EPS_STEP * frame)
-    table = published_table(runs)
     fix = ("stiffen the frame or measure its stiffness, or measure the muscle's held length "
            "under load, and identify again" if table is None else
            f"{table} was measured on its authors' bench, whose frame may have yielded so and "
@@ -940,13 +966,16 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
             "chi2_per_nu": round(float(with_frame / fitness.nu), 3),
             **({} if "L0_mm" in best.names else
                {"rest_length_chi2_lowered": round(float(rest_lowered), 3)}),
+            **({"told_from_fibres": False} if tied else {}),
             "said": (f"frame: a frame, fixtures or load cell yielding under the muscle's pull "
                      f"(about {stiffness:.3g} N/mm, {top_N * compliance:.3g} mm at the largest "
                      f"force, {top_N:.4g} N) holds it shorter than declared, more the more it "
                      f"pulls: fitting that (linearised) lowers chi2 by {lowered:.3g} (chi2/nu "
                      f"{with_frame / fitness.nu:.3g}"
                      f"{', within the noise' if within else ''}){rest_said}; the intervals "
-                     f"hold the muscle fitted with it (the model-form term frame); {fix}"),
+                     "hold the muscle fitted with it (the model-form term frame); "
+                     + ("the braid's fibres stretching fit as well (the next note)" if tied
+                        else fix)),
             **({} if table is None else {"published_table": table}),
             "shift": {n: float(v) for n, v in zip(best.names, shift, strict=True)}}
 
@@ -956,6 +985,24 @@ def published_table(runs) -> str | None:
     (:attr:`mkm.identify.runs.RunData.published`), or None: some run was measured here."""
     tables = {run.published for run in runs}
     return tables.pop() if len(tables) == 1 else None
+
+
+def frame_or_fibres(lowered: dict[str, float], rest_lowered: float, base: float,
+                    fitness) -> tuple[str, ...]:
+    """What the frame check names: of ``"frame"`` and ``"fibres"``, by how far each lowers the
+    linearised refit's chi-square ``base`` (``lowered``, -inf where its fit is at zero), none,
+    one, or both where the data do not tell them apart.
+
+    The better one is named where it takes :data:`FRAME_TAKES` of the chi-square's excess over
+    ``fitness.nu`` away and more than a rest length declared wrong (``rest_lowered``); the
+    other beside it where it lowers chi2 more than the rest length and within
+    :data:`FRAME_OR_FIBRES_CHI2` times the fit's chi2/nu (``fitness.reduced``) of the better."""
+    better = max(lowered.values())
+    if not (base > fitness.nu and better > rest_lowered
+            and better >= FRAME_TAKES * (base - fitness.nu)):
+        return ()
+    return tuple(name for name, chi2 in lowered.items() if chi2 > rest_lowered and (
+        better - chi2 < FRAME_OR_FIBRES_CHI2 * fitness.reduced))
 
 
 def _fibres_column(source, runs, best, tables):

@@ -648,7 +648,8 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     that the braid or the rubber's ratio, which barely move the threshold, are read from it
     too: :func:`pulls_late_first`, ``groups`` what was fitted), else :func:`ratio_first`; a
     frame yielding under the muscle's pull before both where it explains the misfit
-    (:func:`mkm.identify.procedure.frame_hint`), after the other braid where that takes the
+    (:func:`mkm.identify.procedure.frame_hint`; fibres that stretch in its place, or both
+    where the data do not tell them apart), after the other braid where that takes the
     creep's place (it needs no bench to try); a lag between the monitor and the muscle
     before all (``cautions``' :func:`mkm.identify.procedure.lag_hint`): a fit with friction for
     the lag's loop; so does a first rise stiffer than its repeats
@@ -662,7 +663,16 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     # the braid is tried without the bench, so first
     braid = next((c["other_braid"]["braid"] for c in cautions
                   if c["what"] == "braid, creep or load cell gain"), None)
-    if goodness.frame and goodness.frame.get("published_table"):
+    if goodness.frame and goodness.fibres:
+        lacks = ("a yielding frame or stretching fibres (the data do not tell them apart: "
+                 f"about {goodness.frame['stiffness_N_per_mm']:.3g} N/mm or "
+                 f"{100 * goodness.fibres['strain_at_largest_tension']:.2g} % at the largest "
+                 "tension, the notes above)")
+        fix = ("check the frame's stiffness and measure the fibres, then identify again; then "
+               if not goodness.frame.get("published_table") else
+               "ask the table's authors for their frame's stiffness and their braid's fibres, "
+               "else predict with the intervals, which hold the muscle fitted with either; then ")
+    elif goodness.frame and goodness.frame.get("published_table"):
         lacks = (f"a frame yielding under the muscle's pull on the bench "
                  f"{goodness.frame['published_table']} was measured on (about "
                  f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above)")
