@@ -132,8 +132,13 @@ class RunData:
         """0 bar and the settled holds' true pressures at ``values`` (:meth:`true_pressure_bar`),
         those within :data:`TABLE_KNOT_BAR` of the next taken as their mean: where a model is
         solved, so that a hold's force is the model's there, not an interpolation across a
-        threshold between two set pressures."""
-        held = np.unique(np.maximum(self.true_pressure_bar(values)[self.hold >= 0], 0.0))
+        threshold between two set pressures. An imported ramp's samples lie along its sweep
+        (:func:`_along_branches`): its bins' mean true pressures and its ends, the force
+        interpolated between them, not a solve at every sample's pressure."""
+        true = np.maximum(self.true_pressure_bar(values), 0.0)
+        on = self.hold >= 0
+        held = np.unique(np.r_[self.step_means(true), true[on].min(), true[on].max()]
+                         if self.binned else true[on])
         group = np.r_[0, np.cumsum(np.diff(held) > TABLE_KNOT_BAR)]
         knots = np.bincount(group, held) / np.bincount(group)
         return np.unique(np.r_[0.0, knots])
