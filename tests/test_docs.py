@@ -2921,6 +2921,37 @@ def test_the_guides_lag_between_monitor_and_muscle_is_its_measured_file():
     assert (f"The fitted lag is {min(ratio):.2f}-{max(ratio):.2f} times the truth's") in said
 
 
+def test_the_guides_search_model_note_is_its_measured_files():
+    """calibration.md's row on the note that sends the user to ``--search model``: the draws of
+    ``identify_wrong_range.json`` and ``identify_wrong_range_lag.json`` that printed it
+    end-to-end (identify's defaults on simulated runs), each with the ratio and interval the FE
+    model's step gave and whether it holds the truth."""
+    import json
+
+    records = [json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
+               for name in ("identify_wrong_range.json", "identify_wrong_range_lag.json")]
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    draws = [d for r in records for d in r["draws"]]
+    seen = [(d, n) for d in draws for n in d["notes"] if "the FE model may separate them" in n]
+    assert (f"identify's defaults printed it on {len(seen)} of the {len(draws)} draws recorded "
+            "in `identify_wrong_range.json` and `identify_wrong_range_lag.json`") in text
+    for draw, note in seen:
+        ratio, low, high = re.search(r"puts C01/C10 at (\S+) \(95 % interval (\S+)-(\S+), "
+                                     r"linearised", note).groups()
+        truth = draw["muscle"]["truth"]["C01_MPa"] / draw["muscle"]["truth"]["C10_MPa"]
+        holds = float(low) <= truth <= float(high)
+        assert (f"seed {draw['seed']}, " in text and f" {ratio} ({low}-{high}), "
+                + ("holding the truth" if holds else f"the truth's {truth:.3g} outside it")
+                in text)
+        if draw["departure"] == "rest length":
+            short = 100 * (1 - draw["muscle"]["declared_L0_mm"] / draw["muscle"]["L0_mm"])
+            assert (f"seed {draw['seed']}, its rest length declared {short:.2f} % short "
+                    f"(chi2/nu {draw['chi2_per_nu']:.3g}), {ratio} ({low}-{high})") in text
+        else:
+            assert (f"seed {draw['seed']}, a {draw['muscle']['D0_mm']:.3g} mm tube of C01/C10 "
+                    f"{truth:.1g}, {ratio} ({low}-{high})") in text
+
+
 def test_the_guides_first_cycle_softening_is_its_measured_file():
     """calibration.md's words on identify's defaults with a rubber that softens on its first
     loading: held to ``identify_wrong_range_softening.json`` (the verdicts' counts per set of
