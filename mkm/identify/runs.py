@@ -19,7 +19,6 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-from scipy import optimize
 
 from mkm.core.records import file_sha256
 from mkm.scoring import slack
@@ -137,13 +136,8 @@ class RunData:
         """0 bar and the settled holds' true pressures at ``values`` (:meth:`true_pressure_bar`),
         those within :data:`TABLE_KNOT_BAR` of the next taken as their mean: where a model is
         solved, so that a hold's force is the model's there, not an interpolation across a
-        threshold between two set pressures. An imported ramp's samples lie along its sweep
-        (:func:`_along_branches`): its bins' mean true pressures and its ends, the force
-        interpolated between them, not a solve at every sample's pressure."""
-        true = np.maximum(self.true_pressure_bar(values), 0.0)
-        on = self.hold >= 0
-        held = np.unique(np.r_[self.step_means(true), true[on].min(), true[on].max()]
-                         if self.binned else true[on])
+        threshold between two set pressures."""
+        held = np.unique(np.maximum(self.true_pressure_bar(values)[self.hold >= 0], 0.0))
         group = np.r_[0, np.cumsum(np.diff(held) > TABLE_KNOT_BAR)]
         knots = np.bincount(group, held) / np.bincount(group)
         return np.unique(np.r_[0.0, knots])
@@ -269,10 +263,8 @@ def load_run_data(path) -> RunData:
     were all done and only its end-of-run vent was not verified, :func:`unverified_vent`), a
     run without a settled step, a run without its samples. Within each settled hold the
     regulator has reached the set pressure (the settle criterion), so the hold's samples take
-    the hold's mean pressure: the monitor's noise would otherwise ratchet the friction model's
-    play operator; an imported ramp's binned samples take the monotone fit to their readings
-    along each branch (:func:`_along_branches`), which turns where the sweep's highest reading
-    does.
+    the hold's mean pressure: the
+    monitor's noise would otherwise ratchet the friction model's play operator.
     """
     from mkm.bench.storage import load_run
 
@@ -313,11 +305,10 @@ def load_run_data(path) -> RunData:
             pressure_se[k] = np.std(pressure[inside], ddof=1) / np.sqrt(inside.sum())
             if is_ramp and np.ptp(time_s[inside]) > 0:
                 rate[k] = np.polyfit(time_s[inside], pressure[inside], 1)[0]
-        if not is_ramp:
-            pressure[inside] = step["pressure_bar_mean"]
+        pressure[inside] = step["pressure_bar_mean"]
     settled["pressure_se_bar"] = pressure_se
     if is_ramp:
-        _along_branches(pressure, hold, settled)
+        _with_turns(pressure, samples["pressure_bar"].to_numpy(dtype=float), hold, settled)
     # the ramp into a hold does not overshoot it (first-order regulator): clip its noise too
     in_step = samples["step"].to_numpy()
     for _, step in settled.iterrows():
@@ -339,20 +330,18 @@ def load_run_data(path) -> RunData:
                    vented_bar=_vented(run), note=note, **_instrument(run))
 
 
-def _along_branches(pressure: np.ndarray, hold: np.ndarray, settled: pd.DataFrame) -> None:
-    """A ramp's binned samples at the monotone fit to their readings along each branch (each
-    stretch of bins of one direction), in place: the monitor's noise would ratchet the friction
-    model's play operator, and a bin at its mean pressure throughout would have the model clip
-    its force at that mean where the falling branch leaves the turn's plateau (or the force
-    reaches zero) inside the bin, above the mean of the force the muscle pulled across it (a
-    misfit there that a lag's column takes away)."""
-    held = np.flatnonzero(hold >= 0)
-    rising = settled["direction"].to_numpy()[hold[held]] == "up"
-    starts = np.r_[0, np.flatnonzero(rising[1:] != rising[:-1]) + 1]
-    for start, stop in zip(starts, np.r_[starts[1:], held.size], strict=True):
-        part = held[start:stop]
-        pressure[part] = optimize.isotonic_regression(pressure[part],
-                                                      increasing=bool(rising[start])).x
+def _with_turns(pressure: np.ndarray, read: np.ndarray, hold: np.ndarray,
+                settled: pd.DataFrame) -> None:
+    """A ramp's bins, each at its mean pressure, with the pressure it turned at: where the
+    sweep turns, the sample of the highest (lowest) reading of the two bins about the turn
+    takes that reading, so that the friction model turns there and not at the bins' means,
+    below the turn (in place)."""
+    direction = settled["direction"].to_numpy()
+    for k in np.flatnonzero(direction[1:] != direction[:-1]):
+        around = np.flatnonzero((hold == k) | (hold == k + 1))
+        pick = np.argmax if direction[k] == "up" else np.argmin
+        j = around[pick(read[around])]
+        pressure[j] = read[j]
 
 
 def unverified_vent(run, name: str) -> str:

@@ -2124,10 +2124,9 @@ def test_the_ramp_identifies_its_angle_and_friction(tmp_path, mkm_cli):
     assert "creep not fitted: no run has timed holds" in out
     values = {row["parameter"]: row["value"] for row in json.loads(
         (tmp_path / "id" / "identification.json").read_text())["parameters"]}
-    # 2300 samples of 0.3 N noise over ~600 N of force, its bins fitted along the monotone fit
-    # to the sweep's readings, turning at its highest: three noise draws (seeds 1-3) give
-    # 31.996-31.999 deg and a band of 0.0501-0.0503 (at the bins' mean pressures alone, below
-    # the turn: 31.967 deg, 0.0466)
+    # 2300 samples of 0.3 N noise over ~600 N of force, its bins fitted with the pressure the
+    # sweep turned at: three noise draws (seeds 1-3) give 31.999-32.003 deg and a band of
+    # 0.0505-0.0507 (at the bins' mean pressures alone, below the turn: 31.967 deg, 0.0466)
     assert values["theta0_deg"] == pytest.approx(THETA0, abs=0.015)
     assert values["hysteresis_fraction"] == pytest.approx(0.05, abs=0.0015)
 

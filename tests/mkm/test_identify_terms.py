@@ -790,35 +790,6 @@ def test_ramps_on_a_bench_without_a_lag_get_no_lag_note(tmp_path):
                                            "report, design, fem solve)")
 
 
-def test_ramps_of_a_rubbing_braid_without_a_lag_get_no_lag_note(tmp_path):
-    """bench_identify_wrong_range's seed 2026120767 of 'no lag on ramps' (a 38 mm tube, its
-    braid's friction 4 %, the strongest drawn; ramps to 6.17 bar in 73 s) on the thick-wall
-    bench, no tubing: a bin at its mean pressure throughout had the friction model clip its
-    force there where the falling branch leaves the turn's plateau, about 40 N above the mean
-    the muscle pulled across the bin, and the lag's column took that away: a lag of about
-    0.09 s was named and the verdict sent the reader to the tubing first. Along the monotone
-    fit to each branch's readings no lag is named, the friction is the truth's within 0.5 % of
-    it, and the model follows the ramps within their noise."""
-    from mkm.identify import identify
-
-    runs = bench_runs(tmp_path, {"theta0_deg": 27.3642, "C10_MPa": 0.2116, "C01_MPa": 0.2020},
-                      (0.0, 0.1162, 0.2324), steps_to(6.1667),
-                      (2026120767, 2026121767, 2026122767), hysteresis_fraction=0.0397,
-                      model="thickwall", ramp_to_top_s=73.0,
-                      muscle={"id": "rubbing", "D0_mm": 37.59, "t0_mm": 4.21, "L0_mm": 260.7},
-                      loadcell={"capacity_N": 9806.65, "sensitivity_N_per_V": 980.665},
-                      regulator={"max_pressure_bar": 8.0, "full_scale_bar": 9.0,
-                                 "monitor_accuracy_bar": 0.09},
-                      safety={"tare_max_shift_N": 100.0, "tare_max_std_N": 5.0,
-                              "vent_below_bar": 0.18})
-    result = identify(runs, model="thickwall", search="model")
-    assert result.instrument_warnings == []
-    assert not [n for n in result.notes if n.startswith("lag: ")]
-    assert result.fit.values["hysteresis_fraction"] == pytest.approx(0.0397, rel=0.005)
-    assert result._verdict_line().startswith("verdict: the model follows these runs within "
-                                             "their noise")
-
-
 def test_a_first_rise_stiffer_than_its_repeat_is_named_the_rubbers_first_cycle_softening(
         tmp_path):
     """bench_identify_wrong_range's seed 20261601, its staircase run twice, on a rubber that
