@@ -43,8 +43,8 @@ demo: $(VENV)/.installed
 	$(BIN)/mkm demo
 
 # Everything, then the 15 slowest tests, on both cores (CI's machine has two): a module runs whole
-# in one process (its fixtures built once), the longest modules first (tests/conftest.py); under
-# 10 minutes on CI, install included. `make test-fast` leaves out the `slow` tier (wheel and venv
+# in one process (its fixtures built once), the longest modules first (tests/conftest.py); meant for
+# under 10 minutes on CI, install included. `make test-fast` leaves out the `slow` tier (wheel and venv
 # builds, signals, Dask, Chromium, the fine mesh, GP training) while you work.
 test: $(VENV)/.installed-test
 	$(BIN)/ruff check .
