@@ -12,8 +12,9 @@ on the lengths at eps 0.064 and 0.184 with the default params and models (the pr
 range's surrogate searching, the FE model confirming), and ``mkm report`` on the four lengths
 with force with the default models, without and with that identification's calibration.
 
-The benchmark's caches are a folder of its own (``MKM_CACHE_DIR``). Each command runs once
-untimed (the surrogates a user trains on first use are kept), then ``--repeats`` times as a new
+The benchmark's caches are a folder of its own (``MKM_CACHE_DIR``), empty at the start: the first
+``mkm identify`` is timed once as a user's first use (it trains the surrogates it needs, which
+are kept). Each command then runs once untimed, then ``--repeats`` times as a new
 process (the ``mkm`` script of this environment), each with the prediction cache emptied first:
 a first identification or report of these runs, as a user runs it then. Prints the median,
 the fastest and the slowest wall time (with the median CPU time of the process, user and
@@ -85,6 +86,24 @@ def timed(argv, cwd: Path, repeats: int) -> tuple[list[float], list[float]]:
     return times, cpu
 
 
+def row(label: str, measured: tuple[list[float], list[float]], target: float | None,
+        load: float | None) -> dict:
+    """One command's row of the record (printed as it is made): its wall times' median, fastest
+    and slowest and its median CPU time [s], against ``target``."""
+    times, cpu = measured
+    median = statistics.median(times)
+    met = "" if target is None else ("yes" if median <= target else "no")
+    verdict = "" if target is None else (f"  target <= {target:g} s: "
+                                         f"{'met' if median <= target else 'NOT met'}")
+    print(f"  {label:40s} median {median:.1f} s [{min(times):.1f}-{max(times):.1f}], "
+          f"CPU {statistics.median(cpu):.1f} s{verdict}", flush=True)
+    return {"command": label, "runs": len(times), "median_s": round(median, 2),
+            "fastest_s": round(min(times), 2), "slowest_s": round(max(times), 2),
+            "median_cpu_s": round(statistics.median(cpu), 2),
+            "load_average_before": None if load is None else round(load, 2),
+            "target_s": "" if target is None else f"<= {target:g}", "met": met}
+
+
 def measure(work: Path, repeats: int) -> list[dict]:
     from mkm.bench.storage import load_run, read_meta
 
@@ -98,27 +117,19 @@ def measure(work: Path, repeats: int) -> list[dict]:
     if len(two) != 2 or len(pulling) != 4:
         raise SystemExit(f"expected two lengths at eps {IDENTIFY_EPS} and four with force, "
                          f"got {two} and {pulling}")
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
+    start, start_cpu = time.perf_counter(), _children_cpu_s()
     mkm(["identify", *two, "--out", "id"], work)
+    first = [time.perf_counter() - start], [_children_cpu_s() - start_cpu]
+    rows = [row("mkm identify (2 lengths), first use", first, TARGETS["identify"], load)]
     commands.update({
         "mkm identify (2 lengths)": (["identify", *two], TARGETS["identify"]),
         "mkm report (4 lengths)": (["report", *pulling], TARGETS["report"]),
         "mkm report (4 lengths) --calibration": (
             ["report", *pulling, "--calibration", "id/calibration.json"], TARGETS["report"])})
-    rows = []
     for label, (argv, target) in commands.items():
         load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
-        times, cpu = timed(argv, work, repeats)
-        median = statistics.median(times)
-        rows.append({"command": label, "median_s": round(median, 2),
-                     "fastest_s": round(min(times), 2), "slowest_s": round(max(times), 2),
-                     "median_cpu_s": round(statistics.median(cpu), 2),
-                     "load_average_before": None if load is None else round(load, 2),
-                     "target_s": "" if target is None else f"<= {target:g}",
-                     "met": "" if target is None else ("yes" if median <= target else "no")})
-        verdict = "" if target is None else (f"  target <= {target:g} s: "
-                                             f"{'met' if median <= target else 'NOT met'}")
-        print(f"  {label:40s} median {median:.1f} s [{min(times):.1f}-{max(times):.1f}], "
-              f"CPU {statistics.median(cpu):.1f} s{verdict}", flush=True)
+        rows.append(row(label, timed(argv, work, repeats), target, load))
     return rows
 
 
