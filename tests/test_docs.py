@@ -2580,8 +2580,8 @@ def test_the_guides_words_on_more_training_muscles_are_the_learning_curves():
     assert 1.8 <= min(p98) / shipped["p98_pct"] <= 2.2  # "halved"
     box = measured("surrogate_limits_box.json")
     (box_shipped,) = [r for r in box["learning_curve"] if r["fraction"] == 1]
-    assert (f"leaves the worst where it was ({box_shipped['worst_pct']:.2f} -> "
-            f"{box['other_design']['worst_pct']:.2f} %;") in text
+    assert (f"leaves the worst where it is ({box_shipped['worst_pct']:.2f} -> "
+            f"{box['other_design']['worst_pct']:.2f} %).") in text
 
 
 @pytest.mark.slow  # refits the physics baseline on four muscle-held-out splits (seconds)
