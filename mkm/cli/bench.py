@@ -193,11 +193,30 @@ def register(subparsers) -> None:
     rec.set_defaults(func=_recover)
 
 
-def _failed(args, exc: Exception) -> int:  # a mkm.bench.backend.BenchError
-    from mkm.bench.backend import in_words
+def _failed(args, exc: Exception, then: str = "") -> int:
+    """A failure of the bench said in one line (:func:`mkm.bench.backend.device_said`: an
+    ``OSError`` as the device's driver or USB stack raises it, in words), ``then`` after it
+    unless said already; :data:`EXIT_FAILED`."""
+    from mkm.bench.backend import device_said
 
-    say(args, "error", in_words(exc))
-    return EXIT_FAILED
+    said = device_said(exc)
+    said = f"{said}; {then}" if then and then not in said else said
+    return _kept(EXIT_FAILED, lambda: say(args, "error", said))
+
+
+def _on_device(args, call, then: str = ""):
+    """``(call(), None)`` for a call that drives the bench, or ``(None, exit status)`` once its
+    :class:`mkm.bench.backend.BenchError` or ``OSError`` (a crash inside the driver's DLL, the
+    USB stack's I/O error: never ``[Errno 5]`` alone, never exit 2 as bad input) is said by
+    :func:`_failed`. A reader of the output gone is not the device's failure."""
+    from mkm.bench.backend import BenchError  # here: the bench loads pandas
+
+    try:
+        return call(), None
+    except BrokenPipeError:
+        raise
+    except (BenchError, OSError) as exc:
+        return None, _failed(args, exc, then)
 
 
 def _config(args, **overrides):
@@ -295,13 +314,12 @@ def _said(args, result, simulated: str, eps: float | None = None) -> None:
 
 
 def _tare(args) -> int:
-    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import AT_REST_WARNINGS, tare
 
-    try:
-        out = tare(_hardware_config(args, "tare"), clock=args.clock, seconds=args.seconds)
-    except BenchError as exc:
-        return _failed(args, exc)
+    config = _hardware_config(args, "tare")
+    out, failed = _on_device(args, lambda: tare(config, clock=args.clock, seconds=args.seconds))
+    if failed is not None:
+        return failed
     print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
           f"{out['std_N']:.2f} N, n = {out['n']}); {out['shift_from_config_N']:+.2f} N from the "
           "config's offset_V")
@@ -314,7 +332,6 @@ def _tare(args) -> int:
 
 
 def _calibrate_loadcell(args) -> int:
-    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import (
         calibrate_loadcell,
         check_masses,
@@ -330,11 +347,10 @@ def _calibrate_loadcell(args) -> int:
         out = fit_loadcell(args.masses, args.volts)
     else:
         config = _hardware_config(args, "calibrate-loadcell")
-        try:
-            out = calibrate_loadcell(config, args.masses, clock=args.clock,
-                                     seconds=args.seconds)
-        except BenchError as exc:
-            return _failed(args, exc)
+        out, failed = _on_device(args, lambda: calibrate_loadcell(
+            config, args.masses, clock=args.clock, seconds=args.seconds))
+        if failed is not None:
+            return failed
     # stdout: the block to paste into the config; stderr: the fit, for the operator
     spread = out["sensitivity_U95_fraction"]
     interval = (f"+-{100 * spread:.2g} % at 95 %" if math.isfinite(spread) else
@@ -357,7 +373,6 @@ def _calibrate_loadcell(args) -> int:
 
 
 def _check(args) -> int:
-    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.preflight import braid_lock
     from mkm.bench.procedures import check
 
@@ -373,10 +388,10 @@ def _check(args) -> int:
         return 0
     config = _config(args, eps=args.eps, pressures_bar=_staircase(args))
     ceiling = _ceiling(args, config)
-    try:
-        text, warnings, refusal = check(config, ceiling=ceiling)
-    except BenchError as exc:
-        return _failed(args, exc)
+    done, failed = _on_device(args, lambda: check(config, ceiling=ceiling))
+    if failed is not None:
+        return failed
+    text, warnings, refusal = done
     print(text)
     for warning in warnings:  # once, on stderr only
         say(args, "warning", warning)
@@ -397,20 +412,13 @@ def _check(args) -> int:
 
 
 def _vent(args) -> int:
-    from mkm.bench.backend import BenchError, device_said  # here: the bench loads pandas
     from mkm.bench.procedures import vent
     from mkm.bench.vent import reading_bar
 
     config = _hardware_config(args, "vent")
-    try:
-        out = vent(config, clock=args.clock)
-    except BrokenPipeError:  # the reader left: not the device's failure
-        raise
-    except (BenchError, OSError) as exc:  # the device, its driver (an OSError of a DLL's
-        # crash, a USB stack's I/O error): said once where the reason says it already
-        said = device_said(exc)
-        error = said if "VENT BY HAND" in said else f"{said}; VENT BY HAND"
-        return _kept(EXIT_FAILED, lambda: say(args, "error", error))
+    out, failed = _on_device(args, lambda: vent(config, clock=args.clock), "VENT BY HAND")
+    if failed is not None:
+        return failed
     said = ("vent commanded; the regulator is manual: no monitor to read, vent it by hand and "
             "check the manometer" if out["manual"] else
             f"vented: {reading_bar(out['pressure_bar'])} bar after {out['waited_s']:.1f} s")
