@@ -24,7 +24,13 @@ from mkm.cli.common import (
     say,
     shared_help,
 )
-from mkm.core.ranges import decimal_comma_reading, parse_fraction, parse_number, parse_pressures
+from mkm.core.ranges import (
+    decimal_comma_reading,
+    parse_fraction,
+    parse_number,
+    parse_numbers,
+    parse_pressures,
+)
 from mkm.paths import default_out
 
 EXIT_FAILED = 1
@@ -41,7 +47,7 @@ def _positive_seconds(text: str) -> float:
 
 
 def _masses(text: str) -> list[float]:
-    values = [parse_number(t, "--masses", "kg") for t in text.split(",")]
+    values = parse_numbers(text, "--masses", "kg")
     if any(v < 0 for v in values):
         raise ValueError(f"--masses {text!r} has a negative mass: expected kg >= 0")
     if len(set(values)) < 2:  # said before the operator hangs the first mass
@@ -51,7 +57,7 @@ def _masses(text: str) -> list[float]:
 
 
 def _volts(text: str) -> list[float]:
-    return [parse_number(t, "--volts", "V") for t in text.split(",")]
+    return parse_numbers(text, "--volts", "V")
 
 
 def _add_device_arguments(parser, clock: bool = True) -> None:
@@ -125,9 +131,11 @@ def register(subparsers) -> None:
         "0.015,0.065,0.115,0.265")
     _add_device_arguments(cal)
     cal.add_argument("--masses", required=True, type=argtype(_masses),
-                     help="comma list of masses [kg] hung in turn, e.g. 0,1,2,5")
+                     help="comma list of masses [kg] hung in turn, e.g. 0,1,2,5 (with decimal "
+                     "commas, a semicolon list: 0;0,5;1)")
     cal.add_argument("--volts", type=argtype(_volts),
-                     help="mean volts measured under each mass: fit these, no acquisition")
+                     help="list of the mean volts measured under each mass, as --masses: fit "
+                     "these, no acquisition")
     cal.add_argument("--seconds", type=argtype(_positive_seconds), default=3.0,
                      help="averaging time per mass [s] (default %(default)s)")
     cal.set_defaults(func=_calibrate_loadcell)

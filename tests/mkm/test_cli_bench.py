@@ -138,6 +138,20 @@ def test_calibrate_loadcell_prints_the_toml_block(capsys):
     assert config.loadcell.sensitivity_N_per_V == pytest.approx(196.133, rel=1e-6)
 
 
+def test_calibrate_loadcell_takes_semicolon_lists_with_decimal_commas(capsys):
+    # masses and volts typed as a decimal-comma locale writes them: 0.5 kg = 4.903 N over
+    # 0.025 V is 196.13 N/V, the fit of the same numbers typed with points
+    assert main(["calibrate-loadcell", "--masses", "0;0,5;1", "--volts",
+                 "0,01;0,035;0,06"]) == 0
+    commas = capsys.readouterr().out
+    assert main(["calibrate-loadcell", "--masses", "0,0.5,1", "--volts", "0.01,0.035,0.06"]) == 0
+    points = capsys.readouterr().out
+    block = tomllib.loads(commas)["loadcell"]
+    assert block["sensitivity_N_per_V"] == pytest.approx(0.5 * 9.80665 / 0.025, rel=1e-6)
+    assert block["offset_V"] == pytest.approx(0.01, abs=1e-9)
+    assert block == tomllib.loads(points)["loadcell"]
+
+
 def test_calibrate_loadcell_says_how_sure_its_sensitivity_is(capsys):
     # was: the fit's standard error computed and never shown, so a user could not judge the
     # sensitivity_tolerance_fraction the budget takes (0.1 %) against three masses of 0-2 kg
