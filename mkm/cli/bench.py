@@ -1,4 +1,5 @@
-"""``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess|recover``: argument parsing only.
+"""``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess|recover|close``: argument
+parsing only.
 
 Hardware failures (:class:`mkm.bench.backend.BenchError`, a bench another process holds
 included) print one line ``mkm <command>: error: ...`` and exit with status 1; bad input is a
@@ -199,6 +200,26 @@ def register(subparsers) -> None:
         epilog="example: mkm recover mkm-out/runs/20261202T093800Z_paper-prototype")
     rec.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
     rec.set_defaults(func=_recover)
+
+    close = subparsers.add_parser(
+        "close", help="close the record of a run whose mkm acquire died on a PC gone",
+        description="Close by hand the record of a run whose run.json still says running "
+                    "though its mkm acquire has died: recorded on another PC (a run folder on a "
+                    "share) that will not run mkm again, whose next command on its bench would "
+                    "close it. run.json becomes killed, with the samples counted from "
+                    "samples.csv, the end at its last write, and --reason, your user name, this "
+                    "PC and the time (its 'closed' record); no sample is changed, and mkm "
+                    "identify and mkm report take the run. Refused, nothing changed, while its "
+                    "mkm acquire runs on this PC or its files were written within the last "
+                    "5 minutes. Nothing is vented: a run that ended without venting is named, "
+                    "vent its bench there.",
+        epilog='example: mkm close S:\\runs\\20261202T093800Z_paper-prototype --reason '
+               '"BENCH-PC-A broke during the run"')
+    close.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
+    close.add_argument("--reason", required=True,
+                       help="why it is closed by hand, kept in run.json (its reason and "
+                       "closed.reason)")
+    close.set_defaults(func=_close)
 
 
 def _failed(args, exc: Exception, then: str = "") -> int:
@@ -453,6 +474,17 @@ def _reprocess(args) -> int:
     args.run_dir = one_run_folder(args.run_dir)
     path = reprocess(args.run_dir, overlay_config(args.run_dir, args.config), args.out)
     print(path)
+    return 0
+
+
+def _close(args) -> int:
+    from mkm.bench.folders import one_run_folder
+    from mkm.bench.storage import close_by_hand, read_meta
+
+    args.run_dir = one_run_folder(args.run_dir)
+    say(args, "note", close_by_hand(args.run_dir, args.reason))
+    print(args.run_dir, flush=True)
+    say(args, "note", next_commands([args.run_dir], [read_meta(args.run_dir).muscle.eps]))
     return 0
 
 
