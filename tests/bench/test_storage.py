@@ -104,7 +104,8 @@ def test_a_run_dead_on_another_pc_is_closed_by_hand_with_every_sample(run_path):
     assert load_run(run_path).meta.recording().startswith("may still be recorded on BENCH-PC-A")
     now = datetime.datetime(2030, 1, 2, 3, 4, 5, tzinfo=datetime.UTC)
     said = close_by_hand(run_path, " BENCH-PC-A broke\nduring the run ", now=now)
-    assert said == f"run {run_path.name} closed: status killed, {rows} samples kept as they are on disk"
+    assert said == (f"run {run_path.name} closed: status killed, {rows} samples kept as they "
+                    "are on disk")
     after = _contents(run_path)
     assert {k: v for k, v in after.items() if k != "run.json"} == \
         {k: v for k, v in before.items() if k != "run.json"}  # no sample touched
