@@ -96,9 +96,10 @@ def in_words(exc: BaseException) -> str:
 
 
 def device_said(exc: BaseException) -> str:
-    """:func:`in_words` of an error the device raised: an operating system's error there (a
-    crash inside the driver's DLL, a USB stack's I/O error) said as the device's."""
-    if isinstance(exc, OSError):
+    """:func:`in_words` of an error raised while the device was driven: an operating system's
+    error naming no file (a crash inside the driver's DLL, a USB stack's I/O error) said as the
+    device's; one naming a file is that file's."""
+    if isinstance(exc, OSError) and not (exc.filename or exc.filename2):
         return (f"the DAQ device or its driver failed ({in_words(exc)}): check its USB cable and "
                 "power")
     return in_words(exc)

@@ -70,7 +70,8 @@ class RunStatus(enum.StrEnum):
     ABORTED = "aborted"  # stopped on purpose: interlock, signal, operator
     FAILED = "failed"  # stopped by an error: device, storage, tare
     INCOMPLETE = "incomplete"  # never written: the loader's verdict on a dead "running" record
-    KILLED = "killed"  # its process died mid-run: written by the next command that found it
+    KILLED = "killed"  # its process died mid-run: written by the next command that found it,
+    # or by mkm close (close_by_hand)
     IMPORTED = "imported"  # measured elsewhere (another bench, a spreadsheet): mkm import
 
     @property
@@ -222,7 +223,9 @@ class RunMeta:
     operator must vent by hand. ``simulated`` is True for a run on a simulated bench (its
     folder name ends in ``-SIMULATED``). ``unvented_before`` lists earlier runs on this bench
     found ended without venting (and vented) when this run started. ``lost_samples`` totals
-    the ``gaps``.
+    the ``gaps``. ``closed`` says who closed by hand the record of a run whose ``mkm acquire``
+    stopped without closing it (:func:`close_by_hand`): ``reason``, ``by`` (the user), ``on``
+    (the PC), ``utc``.
     """
 
     muscle: Muscle
@@ -257,6 +260,7 @@ class RunMeta:
     reprocessed_from: dict[str, Any] | None = None
     imported_from: dict[str, Any] | None = None
     simulated: bool = False
+    closed: dict[str, Any] | None = None
 
     @property
     def n_steps(self) -> int | None:
@@ -288,7 +292,8 @@ class RunMeta:
             return "once its mkm acquire has ended"
         return (f"once its mkm acquire on {self.recorded_on()} has ended (a run that stopped "
                 "there without closing its record is closed by the next mkm command on that "
-                f"bench there, such as mkm vent on {self.recorded_on()})")
+                f"bench there, such as mkm vent on {self.recorded_on()}; if that PC runs mkm no "
+                "more, by mkm close RUN_DIR --reason TEXT here)")
 
     def as_dict(self) -> dict[str, Any]:
         """run.json's content: strict JSON, so nothing read (a vent check on a lost device or
@@ -394,7 +399,7 @@ _FIELD_TYPES: dict[str, tuple[type, ...]] = {
     "last_command_bar": (float, int), "manual_vent_required": (bool,),
     "vent_check": (dict, type(None)), "unvented_before": (list,),
     "reprocessed_from": (dict, type(None)), "imported_from": (dict, type(None)),
-    "simulated": (bool,),
+    "simulated": (bool,), "closed": (dict, type(None)),
 }
 # Numbers other code reads from the nested objects: section -> key -> (low, high)
 _NESTED_NUMBERS = {
@@ -882,6 +887,93 @@ def _count_joined(path: Path, meta: RunMeta, held: int, done: str, said: str
         return (f"{done}, but run.json could not count them ({exc.strerror or exc}): "
                 f"samples.csv holds {held} samples"), False
     return f"{done}; run.json counts {held} samples", True
+
+
+def ended_on_disk(path: Path) -> tuple[int, str | None]:
+    """What the folder ``path`` of a run whose process died holds: its samples, counted from
+    samples.csv's whole rows (run.json's counter is from its last rewrite), and when
+    samples.csv was last written (UTC, to the second; None without it), the end as far as
+    known."""
+    samples = load_run(path).meta.counters["samples"]
+    csv = path / "samples.csv"
+    return samples, (datetime.datetime.fromtimestamp(csv.stat().st_mtime, datetime.UTC)
+                     .isoformat(timespec="seconds") if csv.is_file() else None)
+
+
+def write_final_record(path: Path, meta: RunMeta) -> None:
+    """``meta``, the final record of the dead run in ``path``, into its run.json (the room its
+    recorder kept for it given back first); raises the ``OSError``."""
+    release_reserve(path)
+    write_json_atomic(path / "run.json", meta.as_dict())
+
+
+#: A run whose samples.csv or run.json changed less than this long ago [s], by this PC's clock
+#: (or, a share's clock ahead, later), may still be recorded: :func:`close_by_hand` refuses it.
+#: A recording run writes samples.csv every block, a second or so apart; the margin covers a
+#: share's cached times and two PCs' clocks minutes apart.
+STILL_WRITTEN_S = 300.0
+
+
+def close_by_hand(run_dir: str | Path, reason: str, now: datetime.datetime | None = None) -> str:
+    """Close the record of a run whose ``mkm acquire`` stopped without closing it (its run.json
+    says ``running``), for a user who knows it is dead: recorded on a PC that will run mkm no
+    more (broken, reinstalled), whose next command would close it (:func:`mkm.bench.unvented.
+    mend_run`). Its run.json becomes ``killed``, as that command writes it, with the samples
+    counted from samples.csv, the end at samples.csv's last write, ``reason`` first in its
+    reason and ``closed`` saying why, by whom, on which PC and when; no other file is touched.
+    Returns what was done, in words.
+
+    ``ValueError`` (nothing changed) when the run is not ``running``, its process runs on this
+    PC, its files were written less than :data:`STILL_WRITTEN_S` ago, or ``reason`` is empty;
+    the ``OSError`` of a run.json that refuses the write.
+    """
+    import getpass
+
+    path = Path(run_dir)
+    reason = " ".join(str(reason).split())
+    if not reason:
+        raise ValueError("--reason is empty: expected why the run is closed by hand (for "
+                         "example \"BENCH-PC-A broke during the run\")")
+    meta = read_meta(path)
+    if meta.status != RunStatus.RUNNING:
+        raise ValueError(f"run {path.name} is closed already (status {meta.status}): expected a "
+                         "run whose run.json says running")
+    if meta.process and meta.process.alive():
+        raise ValueError(f"run {path.name} is still being recorded on this PC (pid "
+                         f"{meta.process.pid}): stop it (Ctrl-C in its window, or mkm vent on "
+                         "its bench asks it to stop) and it closes its record itself")
+    now = now or datetime.datetime.now(datetime.UTC)
+    for name in ("samples.csv", "run.json"):
+        if (path / name).is_file():
+            written = datetime.datetime.fromtimestamp((path / name).stat().st_mtime,
+                                                      datetime.UTC)
+            if (now - written).total_seconds() < STILL_WRITTEN_S:
+                still = written + datetime.timedelta(seconds=STILL_WRITTEN_S)
+                raise ValueError(
+                    f"run {path.name}'s {name} was written at {written:%Y-%m-%dT%H:%M:%S}Z, "
+                    f"less than {STILL_WRITTEN_S / 60:g} min ago: its mkm acquire on "
+                    f"{meta.recorded_on() or 'this PC'} may still record it: expected files "
+                    f"still for that long (close it from {still:%H:%M:%S} UTC on)")
+    samples, died = ended_on_disk(path)
+    try:
+        user = getpass.getuser()
+    except (OSError, KeyError, ImportError):  # no user name in the environment
+        user = "an unknown user"
+    host, at = socket.gethostname(), now.isoformat(timespec="seconds")
+    pid = meta.process.pid if meta.process else "unknown"
+    recorder = meta.process.host if meta.process else "an unknown PC"
+    meta.status, meta.ended_utc = RunStatus.KILLED, died
+    meta.counters["samples"] = samples
+    meta.closed = {"reason": reason, "by": user, "on": host, "utc": at}
+    meta.reason = (f"{reason} (closed by hand with mkm close by {user} on {host} at {at}); its "
+                   f"mkm acquire (pid {pid} on {recorder}) stopped without closing its record, "
+                   f"its last samples written at about {died or 'an unknown time'}")
+    write_final_record(path, meta)
+    unvented = _unvented(_read_csv(path / "commands.csv", COMMAND_COLUMNS, []))
+    vent = (f"; {unvented}: vent that bench (mkm vent on {recorder}, or by hand)" if unvented
+            else "")
+    return (f"run {path.name} closed: status killed, {samples} samples kept as they are on "
+            f"disk{vent}")
 
 
 def release_reserve(path: Path) -> None:

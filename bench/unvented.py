@@ -392,7 +392,7 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
     this run's or not valid: :func:`mkm.bench.storage.outcome_written`), counting the rows on
     disk. Returns what was done, in words, and whether the marker is done with: one whose kept
     record run.json refuses again stays, for the next command to write."""
-    from mkm.bench.storage import load_run, read_meta, release_reserve
+    from mkm.bench.storage import ended_on_disk, read_meta, write_final_record
     from mkm.core.records import provenance
 
     if not marker.run_path:  # left by a command without a run folder
@@ -408,10 +408,8 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
         return "", True  # it recorded its own end
     if not meta.process or meta.process.pid != marker.process.get("pid"):
         return "its run.json names another process: not mended", True
-    samples = load_run(path).meta.counters["samples"]  # the loader counts the rows on disk
-    csv = path / "samples.csv"
-    died = (datetime.datetime.fromtimestamp(csv.stat().st_mtime, datetime.UTC)
-            .isoformat(timespec="seconds") if csv.is_file() else marker.last_command_utc)
+    samples, died = ended_on_disk(path)
+    died = died or marker.last_command_utc
     outcome, whole = marker.outcome, False
     fatal = fatal_error(path)  # the trace faulthandler wrote as the process died
     trace = (f"; its process died of a fatal error ({fatal}): the trace of the thread that "
@@ -438,9 +436,8 @@ def mend_run(marker: Marker) -> tuple[str, bool]:
                        f"{provenance()['date_utc']}"
                        + (f"; the trace of the thread that faulted is in {path / FATAL_TRACE_FILE}"
                           if fatal else ""))
-    release_reserve(path)  # the room it kept for its final record: this one
     try:
-        write_json_atomic(path / "run.json", meta.as_dict())
+        write_final_record(path, meta)
     except OSError as exc:
         kept = "; its bench marker keeps the outcome for the next command" if outcome else ""
         return (f"its run.json could not be rewritten ({exc.strerror or exc}): not mended{kept}",

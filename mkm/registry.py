@@ -21,6 +21,7 @@ import textwrap
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from mkm.core.ranges import list_items
 from mkm.fem.ladder import (
     C01,
     C10,
@@ -212,9 +213,11 @@ def parse_spec(text: str) -> Spec:
 
 
 def parse_specs(text: str) -> list[Spec]:
-    """Specs from a comma list; ``key=value`` items without ``:`` belong to the spec before."""
+    """Specs from a list (:func:`mkm.core.ranges.list_items`: commas, or semicolons between
+    specs whose parameters take commas); ``key=value`` items without ``:`` belong to the spec
+    before."""
     groups: list[str] = []
-    for item in (i.strip() for i in str(text).split(",")):
+    for item in list_items(text):
         if not item:
             continue
         if "=" in item and ":" not in item and groups:

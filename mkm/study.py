@@ -32,6 +32,7 @@ import numpy as np
 import pandas as pd
 
 from mkm.auto import DEFAULT_TOLERANCE, MODEL_ERRORS_FILE, read_model_errors
+from mkm.core.ranges import list_items
 from mkm.core.records import provenance, save_figure, write_atomic, write_json_atomic
 from mkm.fem import ladder
 from mkm.fem.calibration import Calibration
@@ -137,7 +138,7 @@ def surrogate_kinds(text: str) -> tuple[str, ...]:
     known = kind_registry.names(include_families=True)
     if text.strip() == "all":
         return tuple(known)
-    kinds = tuple(k.strip() for k in text.split(",") if k.strip())
+    kinds = tuple(filter(None, list_items(text)))
     unknown = [k for k in kinds if k not in known]
     if unknown or not kinds:
         every = [k.name for k in kind_registry.registered()]  # a family by its pattern

@@ -1,4 +1,5 @@
-"""``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess|recover``: argument parsing only.
+"""``mkm acquire|tare|calibrate-loadcell|check|vent|reprocess|recover|close``: argument
+parsing only.
 
 Hardware failures (:class:`mkm.bench.backend.BenchError`, a bench another process holds
 included) print one line ``mkm <command>: error: ...`` and exit with status 1; bad input is a
@@ -24,7 +25,13 @@ from mkm.cli.common import (
     say,
     shared_help,
 )
-from mkm.core.ranges import decimal_comma_reading, parse_fraction, parse_number, parse_pressures
+from mkm.core.ranges import (
+    decimal_comma_reading,
+    parse_fraction,
+    parse_number,
+    parse_numbers,
+    parse_pressures,
+)
 from mkm.paths import default_out
 
 EXIT_FAILED = 1
@@ -41,7 +48,7 @@ def _positive_seconds(text: str) -> float:
 
 
 def _masses(text: str) -> list[float]:
-    values = [parse_number(t, "--masses", "kg") for t in text.split(",")]
+    values = parse_numbers(text, "--masses", "kg")
     if any(v < 0 for v in values):
         raise ValueError(f"--masses {text!r} has a negative mass: expected kg >= 0")
     if len(set(values)) < 2:  # said before the operator hangs the first mass
@@ -51,7 +58,7 @@ def _masses(text: str) -> list[float]:
 
 
 def _volts(text: str) -> list[float]:
-    return [parse_number(t, "--volts", "V") for t in text.split(",")]
+    return parse_numbers(text, "--volts", "V")
 
 
 def _add_device_arguments(parser, clock: bool = True) -> None:
@@ -125,9 +132,11 @@ def register(subparsers) -> None:
         "0.015,0.065,0.115,0.265")
     _add_device_arguments(cal)
     cal.add_argument("--masses", required=True, type=argtype(_masses),
-                     help="comma list of masses [kg] hung in turn, e.g. 0,1,2,5")
+                     help="comma list of masses [kg] hung in turn, e.g. 0,1,2,5 (with decimal "
+                     "commas, a semicolon list: 0;0,5;1)")
     cal.add_argument("--volts", type=argtype(_volts),
-                     help="mean volts measured under each mass: fit these, no acquisition")
+                     help="list of the mean volts measured under each mass, as --masses: fit "
+                     "these, no acquisition")
     cal.add_argument("--seconds", type=argtype(_positive_seconds), default=3.0,
                      help="averaging time per mass [s] (default %(default)s)")
     cal.set_defaults(func=_calibrate_loadcell)
@@ -192,12 +201,51 @@ def register(subparsers) -> None:
     rec.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
     rec.set_defaults(func=_recover)
 
+    close = subparsers.add_parser(
+        "close", help="close the record of a run whose mkm acquire died on a PC gone",
+        description="Close by hand the record of a run whose run.json still says running "
+                    "though its mkm acquire has died: recorded on another PC (a run folder on a "
+                    "share) that will not run mkm again, whose next command on its bench would "
+                    "close it. run.json becomes killed, with the samples counted from "
+                    "samples.csv, the end at its last write, and --reason, your user name, this "
+                    "PC and the time (its 'closed' record); no sample is changed, and mkm "
+                    "identify and mkm report take the run. Refused, nothing changed, while its "
+                    "mkm acquire runs on this PC or its files were written within the last "
+                    "5 minutes. Nothing is vented: a run that ended without venting is named, "
+                    "vent its bench there.",
+        epilog='example: mkm close S:\\runs\\20261202T093800Z_paper-prototype --reason '
+               '"BENCH-PC-A broke during the run"')
+    close.add_argument("run_dir", metavar="RUN_DIR", help="run folder written by mkm acquire")
+    close.add_argument("--reason", required=True,
+                       help="why it is closed by hand, kept in run.json (its reason and "
+                       "closed.reason)")
+    close.set_defaults(func=_close)
 
-def _failed(args, exc: Exception) -> int:  # a mkm.bench.backend.BenchError
-    from mkm.bench.backend import in_words
 
-    say(args, "error", in_words(exc))
-    return EXIT_FAILED
+def _failed(args, exc: Exception, then: str = "") -> int:
+    """A failure of the bench said in one line (:func:`mkm.bench.backend.device_said`: an
+    ``OSError`` as the device's driver or USB stack raises it, in words), ``then`` after it
+    unless said already; :data:`EXIT_FAILED`."""
+    from mkm.bench.backend import device_said
+
+    said = device_said(exc)
+    said = f"{said}; {then}" if then and then not in said else said
+    return _kept(EXIT_FAILED, lambda: say(args, "error", said))
+
+
+def _on_device(args, call, then: str = ""):
+    """``(call(), None)`` for a call that drives the bench, or ``(None, exit status)`` once its
+    :class:`mkm.bench.backend.BenchError` or ``OSError`` (a crash inside the driver's DLL, the
+    USB stack's I/O error: never ``[Errno 5]`` alone, never exit 2 as bad input) is said by
+    :func:`_failed`. A reader of the output gone is not the device's failure."""
+    from mkm.bench.backend import BenchError  # here: the bench loads pandas
+
+    try:
+        return call(), None
+    except BrokenPipeError:
+        raise
+    except (BenchError, OSError) as exc:
+        return None, _failed(args, exc, then)
 
 
 def _config(args, **overrides):
@@ -295,13 +343,12 @@ def _said(args, result, simulated: str, eps: float | None = None) -> None:
 
 
 def _tare(args) -> int:
-    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import AT_REST_WARNINGS, tare
 
-    try:
-        out = tare(_hardware_config(args, "tare"), clock=args.clock, seconds=args.seconds)
-    except BenchError as exc:
-        return _failed(args, exc)
+    config = _hardware_config(args, "tare")
+    out, failed = _on_device(args, lambda: tare(config, clock=args.clock, seconds=args.seconds))
+    if failed is not None:
+        return failed
     print(f"offset {out['offset_V']:.5f} V (noise {out['std_V'] * 1e3:.2f} mV = "
           f"{out['std_N']:.2f} N, n = {out['n']}); {out['shift_from_config_N']:+.2f} N from the "
           "config's offset_V")
@@ -314,7 +361,6 @@ def _tare(args) -> int:
 
 
 def _calibrate_loadcell(args) -> int:
-    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.procedures import (
         calibrate_loadcell,
         check_masses,
@@ -330,11 +376,10 @@ def _calibrate_loadcell(args) -> int:
         out = fit_loadcell(args.masses, args.volts)
     else:
         config = _hardware_config(args, "calibrate-loadcell")
-        try:
-            out = calibrate_loadcell(config, args.masses, clock=args.clock,
-                                     seconds=args.seconds)
-        except BenchError as exc:
-            return _failed(args, exc)
+        out, failed = _on_device(args, lambda: calibrate_loadcell(
+            config, args.masses, clock=args.clock, seconds=args.seconds))
+        if failed is not None:
+            return failed
     # stdout: the block to paste into the config; stderr: the fit, for the operator
     spread = out["sensitivity_U95_fraction"]
     interval = (f"+-{100 * spread:.2g} % at 95 %" if math.isfinite(spread) else
@@ -357,7 +402,6 @@ def _calibrate_loadcell(args) -> int:
 
 
 def _check(args) -> int:
-    from mkm.bench.backend import BenchError  # here: the bench loads pandas
     from mkm.bench.preflight import braid_lock
     from mkm.bench.procedures import check
 
@@ -373,10 +417,10 @@ def _check(args) -> int:
         return 0
     config = _config(args, eps=args.eps, pressures_bar=_staircase(args))
     ceiling = _ceiling(args, config)
-    try:
-        text, warnings, refusal = check(config, ceiling=ceiling)
-    except BenchError as exc:
-        return _failed(args, exc)
+    done, failed = _on_device(args, lambda: check(config, ceiling=ceiling))
+    if failed is not None:
+        return failed
+    text, warnings, refusal = done
     print(text)
     for warning in warnings:  # once, on stderr only
         say(args, "warning", warning)
@@ -397,20 +441,13 @@ def _check(args) -> int:
 
 
 def _vent(args) -> int:
-    from mkm.bench.backend import BenchError, device_said  # here: the bench loads pandas
     from mkm.bench.procedures import vent
     from mkm.bench.vent import reading_bar
 
     config = _hardware_config(args, "vent")
-    try:
-        out = vent(config, clock=args.clock)
-    except BrokenPipeError:  # the reader left: not the device's failure
-        raise
-    except (BenchError, OSError) as exc:  # the device, its driver (an OSError of a DLL's
-        # crash, a USB stack's I/O error): said once where the reason says it already
-        said = device_said(exc)
-        error = said if "VENT BY HAND" in said else f"{said}; VENT BY HAND"
-        return _kept(EXIT_FAILED, lambda: say(args, "error", error))
+    out, failed = _on_device(args, lambda: vent(config, clock=args.clock), "VENT BY HAND")
+    if failed is not None:
+        return failed
     said = ("vent commanded; the regulator is manual: no monitor to read, vent it by hand and "
             "check the manometer" if out["manual"] else
             f"vented: {reading_bar(out['pressure_bar'])} bar after {out['waited_s']:.1f} s")
@@ -437,6 +474,17 @@ def _reprocess(args) -> int:
     args.run_dir = one_run_folder(args.run_dir)
     path = reprocess(args.run_dir, overlay_config(args.run_dir, args.config), args.out)
     print(path)
+    return 0
+
+
+def _close(args) -> int:
+    from mkm.bench.folders import one_run_folder
+    from mkm.bench.storage import close_by_hand, read_meta
+
+    args.run_dir = one_run_folder(args.run_dir)
+    say(args, "note", close_by_hand(args.run_dir, args.reason))
+    print(args.run_dir, flush=True)
+    say(args, "note", next_commands([args.run_dir], [read_meta(args.run_dir).muscle.eps]))
     return 0
 
 

@@ -294,7 +294,8 @@ def add_muscle_arguments(parser, length: bool = False, sweep: bool = False) -> N
     parser.add_argument("--eps", required=True,
                         type=argtype(parse_shortenings if sweep else parse_fraction),
                         help=shared_help("--eps") + (
-                            "; several as start:stop:step or a comma list (0:20%%:5%%): "
+                            "; several as start:stop:step (0:20%%:5%%) or a comma list (with "
+                            "decimal commas, a semicolon list: 0;0,05;0,1): "
                             "every pressure at each, a force-length curve at one pressure"
                             if sweep else ""))
 

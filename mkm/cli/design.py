@@ -14,7 +14,7 @@ from mkm.cli.common import (
     shared_help,
     with_calibration,
 )
-from mkm.core.ranges import parse_fraction, parse_number
+from mkm.core.ranges import list_items, parse_fraction, parse_number
 from mkm.flags import FLAG_OF, unit_of
 
 EXAMPLE = ("example: mkm design --require 300N@2.5bar,eps=0.10 --require 250N@2.5bar,eps=0.20 "
@@ -162,7 +162,7 @@ def _design(args) -> int:
                                                  "max_outer_diameter_mm", "max_pressure_bar",
                                                  "gap_mm")}
     if args.rubber:
-        constraints["rubber"] = tuple(r.strip() for r in args.rubber.split(",") if r.strip())
+        constraints["rubber"] = tuple(filter(None, list_items(args.rubber)))
     if not args.require and not args.spec:
         raise ValueError("no requirement given: expected --require F@P,eps=E (for example "
                          "--require 400N@2bar,eps=0.10) or --spec FILE")

@@ -13,7 +13,7 @@ from mkm.cli.common import (
     say,
     with_calibration,
 )
-from mkm.core.ranges import parse_seed
+from mkm.core.ranges import list_items, parse_seed
 from mkm.fem.options import BRAIDS
 from mkm.identify.groups import SEARCHES
 from mkm.paths import check_writable, default_out
@@ -104,7 +104,7 @@ def _without_creep(params: str | None, exc: Exception) -> str:
     can leave the fit on a flat bound of its time constant (a 14 mm tube whose cell read 2.7 %
     low: ``bench_identify_wrong_range.py`` seed 20261622, which fits without creep); else ''
     (with the default groups, identify leaves such a creep out itself)."""
-    groups = [g.strip() for g in params.split(",")] if params else []
+    groups = list_items(params) if params else []
     if "did not converge" not in str(exc) or "creep" not in groups:
         return ""
     without = ",".join(g for g in groups if g != "creep")

@@ -23,7 +23,7 @@ from mkm.cli.common import (
     sweep_grid,
     with_calibration,
 )
-from mkm.core.ranges import parse_number, parse_seed
+from mkm.core.ranges import list_items, parse_number, parse_numbers, parse_seed
 from mkm.paths import default_cache, default_out
 from mkm.progress import summary_line
 from mkm.surrogate import kinds
@@ -245,8 +245,8 @@ def _grid(args) -> int:
     from mkm.surrogate.training_data import PAPER_DATASET
 
     start = time.perf_counter()
-    variants = tuple(v.strip() for v in args.variants.split(",") if v.strip())
-    nets = [int(parse_number(n, "--nets")) for n in args.nets.split(",")] if args.nets else None
+    variants = tuple(filter(None, list_items(args.variants)))
+    nets = [int(n) for n in parse_numbers(args.nets, "--nets")] if args.nets else None
     table = paper_grid_study(args.out, args.dataset or PAPER_DATASET, args.seeds, args.jobs,
                              variants, nets, progress=not args.no_progress)
     summary_line("surrogate grid", f"{len(table)} configurations x {args.seeds} splits in "
@@ -423,7 +423,7 @@ def _design(args) -> int:
                      f"points) in {time.perf_counter() - start:.0f} s; wrote {args.out}")
         return 0
     if args.random_seeds:
-        seeds = [int(parse_number(v, "--random-seeds")) for v in args.random_seeds.split(",")]
+        seeds = [int(v) for v in parse_numbers(args.random_seeds, "--random-seeds")]
         shipped = STD_HOLDOUT_SET if args.held_out else STD_CALIBRATION_SET
         out = shipped if args.update_shipped else Path(args.out)
         frame, info = build_random_set(args.muscles, seeds, out, mesh=args.mesh,

@@ -131,19 +131,40 @@ def decimal_comma_reading(text: str) -> float | None:
     return None if match is None else float(f"{match[1]}.{match[2]}")
 
 
+#: How a list option is typed, for the messages (:func:`list_items`).
+LIST_FORMS = "a comma list (0,1,2.5) or, with decimal commas, a semicolon list (0,5;1;2,5)"
+
+
+def list_items(text: str) -> list[str]:
+    """The items of a list typed as one word, stripped: separated by semicolons where the text
+    holds one, its items then free to hold decimal commas (``0,5;1;1,5``, as Windows writes a
+    list where the comma is decimal), else by commas. The one rule of every list option."""
+    return [item.strip() for item in str(text).split(";" if ";" in str(text) else ",")]
+
+
+def parse_numbers(text: str, name: str, unit: str | None = None,
+                  expected: str | None = None) -> list[float]:
+    """A list option's numbers (:func:`list_items`, each :func:`parse_number`): a bad item is
+    one line naming the list and the item."""
+    items = list_items(text)
+    label = f"{name} {text.strip()!r}: entry" if len(items) > 1 else name
+    return [parse_number(item, label, unit, expected) for item in items]
+
+
 def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
-    """``"start:stop:step"`` or a comma list, in bar (a number typed with another unit of
-    pressure, ``250kPa``, converted), or a semicolon list of numbers with decimal commas, as
-    Windows writes a list where the comma is decimal (``0,5;1;1,5``); gauge pressures >= 0."""
+    """``"start:stop:step"`` or a list (:func:`list_items`: ``0,1,2.5`` or ``0,5;1;1,5``), in
+    bar (a number typed with another unit of pressure, ``250kPa``, converted); gauge
+    pressures >= 0."""
     import numpy as np
 
     text = text.strip()
-    if ";" in text and ":" not in text:
-        return parse_pressures(",".join(p.strip().replace(",", ".") for p in text.split(";")),
-                               name)
+    if not text:
+        raise ValueError(f"{name} is empty: expected start:stop:step or {LIST_FORMS}")
+    entries = text.split(":") if ":" in text else list_items(text)
     # '0,100,200kPa': 100 would be read in bar (a zero is zero in every unit)
     number = r"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*"
-    entries = [p for p in re.split(r"[:,]", text) if not re.fullmatch(r"\s*[+-]?0*\.?0*\s*", p)]
+    entries = [p.replace(",", ".") for p in entries
+               if not re.fullmatch(r"\s*[+-]?0*[.,]?0*\s*", p)]
     if (any(re.fullmatch(number + r"(?:[^\W\d_]+|°)\s*", p) for p in entries)
             and any(re.fullmatch(number, p) for p in entries)):
         raise ValueError(f"{name} {text!r} gives a unit to some entries only: expected every "
@@ -151,13 +172,9 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
     if ":" in text:
         values = parse_range(text, name, "bar")
     else:
-        if not text:
-            raise ValueError(f"{name} is empty: expected start:stop:step or a comma list")
-        parts = text.split(",")
-        label = f"{name} {text!r}: entry" if len(parts) > 1 else name
         # '0-8', '0,1,,2': the whole text and the forms it may take
-        forms = "start:stop:step (for example 0:8:0.5) or a comma list (0,1,2.5), in bar"
-        values = np.array([parse_number(p, label, "bar", forms) for p in parts])
+        values = np.array(parse_numbers(text, name, "bar", "start:stop:step (for example "
+                                        f"0:8:0.5) or {LIST_FORMS}, in bar"))
     if (values < 0).any():
         raise ValueError(f"{name} {text!r} has a negative pressure "
                          f"{values[values < 0][0]:g} bar: expected gauge pressures >= 0")
@@ -166,10 +183,10 @@ def parse_pressures(text: str, name: str = "--pressures") -> np.ndarray:
 
 def parse_shortenings(text: str, name: str = "--eps") -> float | np.ndarray:
     """One shortening ratio (:func:`parse_fraction`: ``0.05``, ``5%``), or several:
-    ``start:stop:step`` (stop included where the steps reach it) or a comma list, each a
-    fraction or a percentage
-    (``0:0.2:0.05``, ``0%:20%:5%``, ``0.05,0.1``); a float for one, an array for several. A text
-    that reads both as one value with a decimal comma and as a list is refused."""
+    ``start:stop:step`` (stop included where the steps reach it) or a list
+    (:func:`list_items`), each a fraction or a percentage
+    (``0:0.2:0.05``, ``0%:20%:5%``, ``0.05,0.1``, ``0;0,05;0,1``); a float for one, an array for
+    several. A comma list that also reads as one value with a decimal comma is refused."""
     import numpy as np
 
     text = text.strip()
@@ -188,18 +205,24 @@ def parse_shortenings(text: str, name: str = "--eps") -> float | np.ndarray:
             raise ValueError(f"{name} {text!r} expands to {count} values: expected at most "
                              f"{MAX_RANGE_VALUES}")
         return np.round(start + step * np.arange(count), 12)
-    if "," not in text:
+    items = list_items(text)
+    if len(items) == 1:
         return parse_fraction(text, name)
+    def several() -> np.ndarray:
+        return np.array([parse_fraction(item, f"{name} {text!r}: entry") for item in items])
+
+    if ";" in text:  # its commas are decimal commas: one reading
+        return several()
     readings = []
-    for parse in (lambda: parse_fraction(text, name),
-                  lambda: np.array([parse_fraction(part, name) for part in text.split(",")])):
+    for parse in (lambda: parse_fraction(text, name), several):
         try:
             readings.append(parse())
         except ValueError as exc:
             error = exc
     if len(readings) == 2:
         raise ValueError(f"{name} {text!r} reads as one value with a decimal comma and as a "
-                         "list: expected a decimal point (0.1) or a list of points (0,0.1)")
+                         "list: expected a decimal point (0.1), a list of points (0,0.1) or a "
+                         "semicolon list (0;0,1)")
     if not readings:
         raise error
     return readings[0]

@@ -39,6 +39,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import least_squares
 
+from mkm.core.ranges import list_items
 from mkm.fem.friction import DEFAULTS as TERM_DEFAULTS
 from mkm.fem.friction import force_history
 from mkm.fem.limits import PRACTICAL_RANGE
@@ -92,7 +93,7 @@ def parse_groups(text: str | None) -> tuple[str, ...]:
     """``--params`` as group names in canonical order; ``ValueError`` names an unknown one."""
     if text is None:
         return DEFAULT_GROUPS
-    names = [n.strip() for n in str(text).split(",") if n.strip()]
+    names = list(filter(None, list_items(text)))
     unknown = [n for n in names if n not in GROUPS]
     if unknown:
         raise ValueError(f"--params {text!r}: unknown parameter {unknown[0]!r}: expected some "

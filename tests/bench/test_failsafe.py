@@ -82,21 +82,36 @@ def test_vent_with_a_full_state_folder_vents_then_says_so(mkm_cli, monkeypatch):
     assert code == 1 and "not writable (No space left on device)" in err
 
 
-def test_vent_whose_device_raises_an_os_error_asks_for_a_vent_by_hand(mkm_cli, monkeypatch):
-    # the driver raises an OSError at the open (a crash inside its DLL, a USB stack's I/O
-    # error): `mkm vent` said "[Errno 5] Input/output error", exit 2, as a bad argument, and
-    # never that the muscle may still be pressurised
+@pytest.mark.parametrize("argv", [["tare", "--backend", "sim"], ["check", "--backend", "sim"],
+                                  ["calibrate-loadcell", "--backend", "sim", "--masses", "0,1,2"],
+                                  ["vent", "--backend", "sim"]])
+@pytest.mark.parametrize("at", ["open", "read"])
+def test_every_bench_command_says_an_os_error_of_the_device_in_words(mkm_cli, monkeypatch,
+                                                                     argv, at):
+    # the driver raises an OSError (a crash inside its DLL, a USB stack's I/O error) as the
+    # device opens or as it is read: tare, check and calibrate-loadcell said "[Errno 5]
+    # Input/output error", exit 2, as a bad argument. Every bench command says it as vent
+    # does, exit 1 as the device's other failures; vent asks for a vent by hand
     from mkm.bench.sim import SimBackend
 
-    def broken(self):
+    def broken(self, *args, **kwargs):
         raise OSError(errno.EIO, "Input/output error")
 
-    monkeypatch.setattr(SimBackend, "open", broken)
-    code, out, err = mkm_cli(["vent", "--backend", "sim"])
-    assert code == 1 and out == ""
-    assert err.splitlines()[-1] == ("mkm vent: error: the DAQ device or its driver failed "
-                                    "(Input/output error): check its USB cable and power; VENT "
-                                    "BY HAND")
+    monkeypatch.setattr(SimBackend, at, broken)
+    code, out, err = mkm_cli(argv)
+    said = ("the DAQ device or its driver failed (Input/output error): check its USB cable "
+            "and power" + ("; VENT BY HAND" if argv[0] == "vent" else ""))
+    assert code == 1 and out == "" and "Traceback" not in err
+    assert err.splitlines()[-1] == f"mkm {argv[0]}: error: {said}"
+
+
+def test_an_os_error_naming_a_file_is_not_said_as_the_device_s():
+    # an error of a file met while the device was driven (the state folder's disk full) names
+    # that file, not the DAQ device's cable
+    from mkm.bench.backend import device_said
+
+    full = OSError(errno.ENOSPC, "No space left on device", "/state/benches/sim-dev1.lock")
+    assert device_said(full) == "No space left on device: /state/benches/sim-dev1.lock"
 
 
 def test_vent_with_a_state_folder_that_hangs_vents_then_says_so(monkeypatch):

@@ -69,6 +69,99 @@ def test_a_run_recorded_on_another_pc_is_not_called_killed(run_path):
                             "without closing its record (killed or crashed)"]
 
 
+def _dead_elsewhere(run_path, minutes_ago=10.0, host="BENCH-PC-A"):
+    """run.json as a run recorded on ``host`` leaves it when that PC dies mid-run (running, its
+    counter from its last rewrite), its files last written ``minutes_ago``."""
+    import datetime
+
+    meta = json.loads((run_path / "run.json").read_text())
+    meta.update(status="running", reason="", ended_utc=None)
+    meta["process"].update(host=host, pid=2**22 + 7)
+    meta["counters"]["samples"] = 10
+    write_json_atomic(run_path / "run.json", meta)
+    then = datetime.datetime.now(datetime.UTC) - datetime.timedelta(minutes=minutes_ago)
+    for file in run_path.iterdir():
+        os.utime(file, (then.timestamp(), then.timestamp()))
+    return then
+
+
+def _contents(run_path):
+    return {f.name: f.read_bytes() for f in run_path.iterdir() if f.is_file()}
+
+
+def test_a_run_dead_on_another_pc_is_closed_by_hand_with_every_sample(run_path):
+    # its PC broke and runs mkm no more: identify and report refused the run ("may still be
+    # recorded on BENCH-PC-A") and only an edit of run.json by hand let them take it
+    import datetime
+    import getpass
+    import socket
+
+    from mkm.bench.storage import close_by_hand
+
+    rows = len(load_run(run_path).samples)
+    then = _dead_elsewhere(run_path)
+    before = _contents(run_path)
+    assert load_run(run_path).meta.recording().startswith("may still be recorded on BENCH-PC-A")
+    now = datetime.datetime(2030, 1, 2, 3, 4, 5, tzinfo=datetime.UTC)
+    said = close_by_hand(run_path, " BENCH-PC-A broke\nduring the run ", now=now)
+    assert said == (f"run {run_path.name} closed: status killed, {rows} samples kept as they "
+                    "are on disk")
+    after = _contents(run_path)
+    assert {k: v for k, v in after.items() if k != "run.json"} == \
+        {k: v for k, v in before.items() if k != "run.json"}  # no sample touched
+    meta = json.loads(after["run.json"])
+    assert meta["status"] == "killed" and meta["counters"]["samples"] == rows
+    assert meta["ended_utc"] == then.isoformat(timespec="seconds")  # samples.csv's last write
+    assert meta["closed"] == {"reason": "BENCH-PC-A broke during the run",
+                              "by": getpass.getuser(), "on": socket.gethostname(),
+                              "utc": "2030-01-02T03:04:05+00:00"}
+    assert meta["reason"].startswith("BENCH-PC-A broke during the run (closed by hand with mkm "
+                                     f"close by {getpass.getuser()} on {socket.gethostname()} "
+                                     "at 2030-01-02T03:04:05+00:00); its mkm acquire (pid "
+                                     f"{2**22 + 7} on BENCH-PC-A) stopped without closing")
+    run = load_run(run_path)
+    assert run.status == "killed" and not run.meta.recording() and run.rows_lost == []
+    assert len(run.samples) == rows and run.problems[0] == meta["reason"][:200].rstrip() + \
+        "... (in full in run.json)"
+
+
+@pytest.mark.parametrize("case, refused", [
+    ("alive here", "is still being recorded on this PC (pid "),
+    ("written a minute ago", "less than 5 min ago: its mkm acquire on BENCH-PC-A may still "
+     "record it"),
+    ("closed", "is closed already (status complete): expected a run whose run.json says "
+     "running"),
+    ("no reason", "--reason is empty"),
+])
+def test_a_run_that_may_still_record_is_not_closed_by_hand(run_path, case, refused):
+    from mkm.bench.storage import ProcessIdentity, close_by_hand
+
+    if case != "closed":
+        _dead_elsewhere(run_path, minutes_ago=1.0 if case == "written a minute ago" else 10.0)
+    if case == "alive here":  # this very process, on this PC
+        meta = json.loads((run_path / "run.json").read_text())
+        meta["process"] = dataclasses.asdict(ProcessIdentity.current())
+        write_json_atomic(run_path / "run.json", meta)
+    before = _contents(run_path)
+    with pytest.raises(ValueError, match=re.escape(refused)):
+        close_by_hand(run_path, "" if case == "no reason" else "the PC broke")
+    assert _contents(run_path) == before
+
+
+def test_a_run_closed_by_hand_that_ended_pressurised_says_so(run_path):
+    # the run died with 1.5 bar commanded: closing it from here vents nothing, and says so
+    from mkm.bench.storage import close_by_hand
+
+    commands = (run_path / "commands.csv").read_text().splitlines()
+    last = next(k for k, line in enumerate(commands) if line.split(",")[2] not in ("0", "0.0",
+                                                                                  "command_bar"))
+    (run_path / "commands.csv").write_text("\n".join(commands[:last + 1]) + "\n")
+    _dead_elsewhere(run_path)
+    said = close_by_hand(run_path, "the PC broke")
+    assert "it ended without venting: the last commanded pressure was" in said
+    assert said.endswith(": vent that bench (mkm vent on BENCH-PC-A, or by hand)")
+
+
 def test_reused_pid_does_not_look_alive(run_path):
     # A live pid with another start time is another process: the recorder is dead (issue 12).
     meta = json.loads((run_path / "run.json").read_text())

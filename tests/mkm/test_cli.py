@@ -47,6 +47,33 @@ def test_pressures_range_and_list(text, expected, mkm_run):
     np.testing.assert_allclose(frame.pressure_bar, expected, rtol=0, atol=1e-12)
 
 
+def test_every_list_option_takes_a_semicolon_list_with_decimal_commas(mkm_run):
+    # --pressures "0,5;1;1,5" was read, --eps "0;0,05;0,1" refused as one value with a decimal
+    # comma: every list option splits as mkm.core.ranges.list_items does
+    points = solve_frame([*SOLVE, "--eps", "0,0.05,0.1", "--pressures", "0.5,1,1.5"], mkm_run)
+    commas = solve_frame([*SOLVE, "--eps", "0;0,05;0,1", "--pressures", "0,5;1;1,5"], mkm_run)
+    pd.testing.assert_frame_equal(commas, points)
+    assert sorted(set(commas.eps)) == [0.0, 0.05, 0.1] and len(commas) == 9
+
+
+@pytest.mark.parametrize("argv, said", [
+    ([*SOLVE, "--eps", "0;0,05;x"], "--eps '0;0,05;x': entry='x' is not a number: expected a "
+     "fraction (0.05) or a percentage (5%)"),
+    ([*SOLVE, "--eps", "0;0,05;12"], "--eps '0;0,05;12': entry 12: a fraction is expected; "
+     "did you mean 12%?"),
+    ([*SOLVE, "--eps", "0.05", "--pressures", "0,5;;1"], "--pressures '0,5;;1': entry='' is not "
+     "a number: expected start:stop:step (for example 0:8:0.5) or a comma list (0,1,2.5) or, "
+     "with decimal commas, a semicolon list (0,5;1;2,5), in bar"),
+    (["calibrate-loadcell", "--masses", "0;0,5;1", "--volts", "0,01;x;0,06"],
+     "--volts '0,01;x;0,06': entry='x' is not a number: expected a number in V, or one with a "
+     "unit such as 2V or 500mV"),
+])
+def test_a_bad_item_of_a_list_is_one_line_naming_it(argv, said, mkm_run):
+    code, out, err = mkm_run(argv)
+    assert code == 2 and out == ""
+    assert err.endswith(f": error: {said}\n") and err.count("\n") == 1
+
+
 def test_the_help_says_a_stop_off_the_steps_is_not_exceeded(mkm_run):
     """--help said 'start:stop:step (stop included)', and 0:8:3 gave 0, 3 and 6 bar: the stop
     is included where the steps reach it, never exceeded, as the help says now."""

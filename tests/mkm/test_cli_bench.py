@@ -138,6 +138,20 @@ def test_calibrate_loadcell_prints_the_toml_block(capsys):
     assert config.loadcell.sensitivity_N_per_V == pytest.approx(196.133, rel=1e-6)
 
 
+def test_calibrate_loadcell_takes_semicolon_lists_with_decimal_commas(capsys):
+    # masses and volts typed as a decimal-comma locale writes them: 0.5 kg = 4.903 N over
+    # 0.025 V is 196.13 N/V, the fit of the same numbers typed with points
+    assert main(["calibrate-loadcell", "--masses", "0;0,5;1", "--volts",
+                 "0,01;0,035;0,06"]) == 0
+    commas = capsys.readouterr().out
+    assert main(["calibrate-loadcell", "--masses", "0,0.5,1", "--volts", "0.01,0.035,0.06"]) == 0
+    points = capsys.readouterr().out
+    block = tomllib.loads(commas)["loadcell"]
+    assert block["sensitivity_N_per_V"] == pytest.approx(0.5 * 9.80665 / 0.025, rel=1e-6)
+    assert block["offset_V"] == pytest.approx(0.01, abs=1e-9)
+    assert block == tomllib.loads(points)["loadcell"]
+
+
 def test_calibrate_loadcell_says_how_sure_its_sensitivity_is(capsys):
     # was: the fit's standard error computed and never shown, so a user could not judge the
     # sensitivity_tolerance_fraction the budget takes (0.1 %) against three masses of 0-2 kg
@@ -471,7 +485,8 @@ def test_a_run_still_being_recorded_is_not_identified_and_its_export_says_so(tmp
                  "and this PC cannot see that PC's processes)")
     then = ("once its mkm acquire on BENCH-PC-A has ended (a run that stopped there without "
             "closing its record is closed by the next mkm command on that bench there, such as "
-            "mkm vent on BENCH-PC-A)")
+            "mkm vent on BENCH-PC-A; if that PC runs mkm no more, by mkm close RUN_DIR --reason "
+            "TEXT here)")
     assert main(["identify", str(path), "--out", str(tmp_path / "id")]) == 2
     assert capsys.readouterr().err == (
         f"mkm identify: error: run {elsewhere}: expected a run that has ended (identify it "
@@ -481,6 +496,49 @@ def test_a_run_still_being_recorded_is_not_identified_and_its_export_says_so(tmp
     assert capsys.readouterr().err == (
         f"mkm export: note: {elsewhere}: the export holds its record so far (status "
         f"incomplete); export it again {then}\n")
+
+
+def test_a_run_dead_on_a_pc_gone_is_closed_by_hand_then_identified(tmp_path, capsys):
+    """A run folder on a share whose bench PC broke mid-run: its run.json says running, and
+    `mkm identify` refused it ("may still be recorded on BENCH-PC-A"), naming only the next mkm
+    command there. `mkm close RUN --reason` closes it here, every sample kept, and identify
+    takes it."""
+    import datetime
+    import os
+
+    from mkm.bench.run import acquire
+    from mkm.bench.storage import STILL_WRITTEN_S
+    from mkm.cli import build_parser
+    from mkm.identify.runs import load_run_data
+
+    config = load_config(pressures_bar=[0.5, 1.0]).replace(sequence={"preconditioning_cycles": 0})
+    path = acquire(config, out_root=tmp_path / "runs", notify=lambda m: None).path
+    rows = len(load_run(path).samples)
+    meta = json.loads((path / "run.json").read_text(encoding="utf-8"))
+    meta.update(status="running", reason="", ended_utc=None)
+    meta["process"].update(host="BENCH-PC-A", pid=2**22 + 7)
+    (path / "run.json").write_text(json.dumps(meta), encoding="utf-8")
+    with pytest.raises(ValueError, match="if that PC runs mkm no more, by mkm close RUN_DIR "
+                       "--reason TEXT here"):
+        load_run_data(path)
+    assert main(["close", str(path), "--reason", "BENCH-PC-A broke"]) == 2  # written just now
+    assert "may still record it" in capsys.readouterr().err
+    old = (datetime.datetime.now(datetime.UTC) - datetime.timedelta(minutes=6)).timestamp()
+    for file in path.iterdir():
+        os.utime(file, (old, old))
+    samples = (path / "samples.csv").read_bytes()
+    assert main(["close", str(path), "--reason", "BENCH-PC-A broke"]) == 0
+    captured = capsys.readouterr()
+    assert captured.out == f"{path}\n"
+    assert captured.err.splitlines()[0] == (f"mkm close: note: run {path.name} closed: status "
+                                            f"killed, {rows} samples kept as they are on disk")
+    assert (path / "samples.csv").read_bytes() == samples
+    assert json.loads((path / "run.json").read_text(encoding="utf-8"))["closed"]["reason"] == \
+        "BENCH-PC-A broke"
+    assert len(load_run_data(path).time_s) == rows
+    # its --help says the wait the refusal holds to
+    help_text = build_parser()._subparsers._group_actions[0].choices["close"].description
+    assert f"within the last {STILL_WRITTEN_S / 60:g} minutes" in help_text
 
 
 def test_demo_on_a_held_simulated_bench_is_one_line(tmp_path, capsys):

@@ -5,8 +5,10 @@ import pytest
 
 from mkm.core.ranges import (
     MAX_RANGE_VALUES,
+    list_items,
     parse_fraction,
     parse_number,
+    parse_numbers,
     parse_pressures,
     parse_range,
     parse_shortenings,
@@ -26,6 +28,16 @@ def test_pressures_as_range_or_comma_list():
     np.testing.assert_array_equal(parse_pressures(" 2.5, 0 ,1"), [2.5, 0.0, 1.0])
     # a list as German Windows writes it, its comma decimal: 'entry='5;1' is not a number'
     np.testing.assert_array_equal(parse_pressures("0,5; 1;1,5 ;2,5"), [0.5, 1.0, 1.5, 2.5])
+
+
+def test_a_list_splits_on_semicolons_where_it_holds_one_else_on_commas():
+    # the one rule of every list option: a semicolon list keeps its decimal commas in its items
+    assert list_items(" 0,5; 1;1,5 ") == ["0,5", "1", "1,5"]
+    assert list_items("paper, standardised") == ["paper", "standardised"]
+    assert list_items("eq2;axisym:mesh=coarse,theta0=20") == ["eq2", "axisym:mesh=coarse,theta0=20"]
+    assert parse_numbers("0;0,5;1", "--masses", "kg") == [0.0, 0.5, 1.0]
+    assert parse_numbers("0,0.5,1", "--masses", "kg") == [0.0, 0.5, 1.0]
+    assert parse_numbers("500g;1,5kg", "--masses", "kg") == [0.5, 1.5]
 
 
 def test_fraction_or_percentage_mean_the_same():
@@ -107,7 +119,10 @@ def test_a_number_typed_with_a_unit_is_converted_into_the_options():
     (lambda: parse_pressures("0.5,1,2psi"), "gives a unit to some entries only"),
     # a mistyped sweep names the whole text and the two forms it may take
     (lambda: parse_pressures("0-8"), r"^--pressures='0-8' is not a number: expected "
-     r"start:stop:step \(for example 0:8:0\.5\) or a comma list \(0,1,2\.5\), in bar$"),
+     r"start:stop:step \(for example 0:8:0\.5\) or a comma list \(0,1,2\.5\) or, with "
+     r"decimal commas, a semicolon list \(0,5;1;2,5\), in bar$"),
+    # a decimal comma in a semicolon list is a number of the unit check as much as 0.5 is
+    (lambda: parse_pressures("0,5;250kPa"), "gives a unit to some entries only"),
     (lambda: parse_pressures("0,1,,2"), r"^--pressures '0,1,,2': entry='' is not a number: "
      "expected start:stop:step"),
     (lambda: parse_fraction("five%"), r"^--eps='five%' is not a number followed by %: "
@@ -132,7 +147,8 @@ def test_bad_text_gives_one_line_naming_it(call, message):
 @pytest.mark.parametrize("text, expected", [
     ("5%", 0.05), ("0.05", 0.05), ("0,05", 0.05), ("12,5%", 0.125),  # one, as parse_fraction
     ("0:0.2:0.05", [0.0, 0.05, 0.1, 0.15, 0.2]), ("0%:20%:10%", [0.0, 0.1, 0.2]),
-    ("0.05,0.1", [0.05, 0.1]), ("5%,10%", [0.05, 0.1]), ("0,0.1", [0.0, 0.1])])
+    ("0.05,0.1", [0.05, 0.1]), ("5%,10%", [0.05, 0.1]), ("0,0.1", [0.0, 0.1]),
+    ("0;0,05;0,1", [0.0, 0.05, 0.1]), ("0,5%;12,5%", [0.005, 0.125])])
 def test_several_shortenings_are_a_range_or_a_list(text, expected):
     got = parse_shortenings(text)
     assert np.ndim(got) == np.ndim(expected)
