@@ -362,7 +362,14 @@ def test_a_table_of_repeated_sweeps_is_judged_by_its_repeats_scatter(tmp_path):
     for found in good.repeats:
         assert found.noise_N == pytest.approx(1.0, rel=0.54)
     assert not good.misfit
-    assert good.record()["noise_from_repeats"][0]["dof"] == 16
+    # all steps' p-value takes each table whole: its branches' chi-squares against one F
+    table = good.record()["noise_from_repeats"][0]
+    mine = [b for b in good.branches if b.run == table["run"]]
+    assert table["dof"] == 16 and len(mine) == 2
+    chi2, nu = sum(b.chi2 for b in mine), sum(b.nu for b in mine)
+    assert (table["chi2"], table["nu"]) == (pytest.approx(chi2, abs=1e-3),
+                                            pytest.approx(nu, abs=1e-3))
+    assert table["p_value"] == pytest.approx(stats.f.sf(chi2 / nu, nu, 16), rel=2e-3)
     # a 0.5 mm gap between tube and braid, which the fitted model has not: beyond the repeats
     runs, fit = repeated_tables(tmp_path / "gap", {"theta0_deg": 32.0, "gap_mm": 0.5}, cycles=3)
     good = goodness.assess(runs, fit)
