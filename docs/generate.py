@@ -425,6 +425,8 @@ QUOTED_RUNS = {
                                    "20261701 20261702 20261703 20261704 20261705 --pool-with "
                                    "tests/surrogate/data/range_check.csv --out {out}",
     "surrogate_range_lock.json": "benchmarks/bench_range_lock.py --out {out}",
+    "repeats_ftest.json": "benchmarks/bench_repeats_ftest.py --fits 3000 --wrong-fits 400 "
+                          "--gap-mm 0.05 --seed 2026121163 --out {out}",
     "identify_rest_length_shortened.json": "benchmarks/bench_identify_rest_length.py --fits "
                                            "thickwall:theta0,rubber,L0 --pairs shortened "
                                            "--out {out}",

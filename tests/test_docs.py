@@ -1397,6 +1397,35 @@ def test_the_bench_pages_recorder_lag_is_its_measured_file():
     assert f"near the {record['disk_stuck_s']:g} s held" in text
 
 
+def test_the_calibration_pages_words_on_the_repeats_f_test_are_its_measured_file():
+    """calibration.md quotes the F test of a table's repeats from ``repeats_ftest.json``: how
+    often it calls tables the fitted model made a misfit (its size, with the binomial interval)
+    and tables of a muscle with a gap the model has not (its power), with the command."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "repeats_ftest.json").read_text(encoding="utf-8"))
+    right, wrong = record["rows"]
+    text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
+    command = _generate().measured_commands()["repeats_ftest.json"].split(" --out ")[0]
+    assert record["sweeps"] == 3 and record["command"].startswith(command)
+
+    def share(row, what):
+        return f"{row[f'share below {what} [%]']:.1f}"
+
+    def interval(row):
+        return (f"(95 % interval {row['95 % interval low [%]']:.1f}-"
+                f"{row['95 % interval high [%]']:.1f} %)")
+
+    assert (f"Of {right['fits']} pairs of thick-wall tables fitted with the angle and the "
+            f"rubber, three sweeps each at 0.3-3 N of noise, {share(right, '0.05')} % fall below "
+            f"p 0.05 {interval(right)}, {share(right, '0.2')} and {share(right, '0.5')} % below "
+            f"0.2 and 0.5, {right['misfits']} misfit; of {wrong['fits']} pairs of a muscle with "
+            f"a {record['gap_mm']:g} mm gap between tube and braid, which the fitted model has "
+            f"not, {share(wrong, '0.05')} % fall below p 0.05 {interval(wrong)}, "
+            f"{wrong['misfits']} misfit (`OPENBLAS_NUM_THREADS=1 .venv/bin/python {command}`, "
+            "`docs/measured/repeats_ftest.json`)") in text
+
+
 @pytest.mark.parametrize("measured", ["auto.json", "auto_practical.json"])
 def test_the_guides_auto_tables_are_their_measured_files(measured):
     """force-models.md quotes auto's fresh calls per tolerance by hand; nothing held the table to

@@ -31,7 +31,10 @@ model does not have) biases the estimate as well, which the warning line says.
 A step table without a declared accuracy has one value per step; where its sweeps repeat its
 pressures, the scatter of the repeats' residuals is its noise (:func:`repeat_noise`), estimated,
 so its branches are judged by an F test (:func:`_from_repeats`); its steps are what the fit
-minimised, one value each, so there the parameters take their degrees of freedom.
+minimised, one value each, so there the parameters take their degrees of freedom. Its rising and
+falling branches share that one estimate, so their F tests are not independent (a scatter
+drawn low raises both): all steps' p-value takes the table whole, one F test of its branches'
+chi-squares together (:meth:`Goodness.table_tests`).
 
 The bench's instrument tolerances (the load cell's gain, the monitor's accuracy) are not noise
 here: they are errors the data share, and a fit that cannot absorb them shows them as misfit.
@@ -43,7 +46,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy import optimize, stats
+from scipy import optimize, special, stats
 
 from mkm.bench.series import PLATEAU_TOLERANCE_BAR
 from mkm.fem.calibration import THRESHOLD_FLOOR_FRACTION, line_above_threshold
@@ -83,9 +86,6 @@ class Branch:
     #: each step's mean residual and its noise [N] (the discrepancy's estimate takes them)
     residual_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
     noise_N: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
-    #: where the noise was estimated (a table's repeats): the chi-square of ``nu`` degrees of
-    #: freedom as probable as ``p_value``, which all branches' p-value adds; None: ``chi2``
-    p_chi2: float | None = None
 
     @property
     def reduced(self) -> float:
@@ -144,9 +144,29 @@ class Goodness:
 
     @property
     def p_value(self) -> float:
-        """P(chi2 of all steps >= observed | the noise alone)."""
-        total = sum(b.chi2 if b.p_chi2 is None else b.p_chi2 for b in self.branches)
-        return float(stats.chi2.sf(total, self.nu)) if self.nu > 0 else math.nan
+        """P(chi2 of all steps >= observed | the noise alone): the branches' chi-squares added,
+        a table judged by its repeats as the chi-square as probable as its F test
+        (:meth:`table_tests`)."""
+        if not self.nu > 0:
+            return math.nan
+        tables = self.table_tests()
+        total = sum(b.chi2 for b in self.branches if b.run not in tables)
+        total += sum(test["p_chi2"] for test in tables.values())
+        return float(special.chdtrc(self.nu, total))
+
+    def table_tests(self) -> dict[str, dict]:
+        """Per step table judged by its repeats: the F test of its branches together against
+        the one noise they share (its rising and falling branches' F tests are not
+        independent, and added as if they were, a fitting model is called a misfit too often:
+        :func:`f_test`)."""
+        tests = {}
+        for found in self.repeats:
+            mine = [b for b in self.branches if b.run == found.run]
+            chi2, nu = sum(b.chi2 for b in mine), sum(b.nu for b in mine)
+            if nu > 0:
+                p, p_chi2 = f_test(chi2, nu, found.dof)
+                tests[found.run] = {"chi2": chi2, "nu": nu, "p_value": p, "p_chi2": p_chi2}
+        return tests
 
     @property
     def misfit(self) -> list[Branch]:
@@ -281,7 +301,7 @@ class Goodness:
                 **({"fibres": {k: v for k, v in self.fibres.items() if k not in ("said", "shift")}}
                    if self.fibres else {}),
                 **({"frame_check": self.frame_check} if self.frame_check else {}),
-                **({"noise_from_repeats": [r.record() for r in self.repeats],
+                **({"noise_from_repeats": [self._repeats_record(r) for r in self.repeats],
                     "repeats_method": "a step table without a declared accuracy: one step's "
                                       "noise the pooled standard deviation of the residuals "
                                       "of its steps repeated on one branch within "
@@ -289,9 +309,18 @@ class Goodness:
                                       "repeats' means against it (at least "
                                       f"{REPEAT_MIN_DOF} degrees of freedom), the means' "
                                       "degrees of freedom their number less the fit's "
-                                      "leverage on them"}
+                                      "leverage on them; each branch alone, and the table "
+                                      "whole (its branches share the noise) in all steps' "
+                                      "p-value"}
                    if self.repeats else {}),
                 "branches": [b.record() for b in self.branches]}
+
+    def _repeats_record(self, found: Repeats) -> dict:
+        """A table's noise from its repeats and its F test whole (:meth:`table_tests`)."""
+        test = self.table_tests().get(found.run)
+        return {**found.record(), **({
+            "chi2": round(test["chi2"], 3), "nu": round(test["nu"], 3),
+            "p_value": float(f"{test['p_value']:.3g}")} if test else {})}
 
 
 def runs_test(values) -> tuple[int, float]:
@@ -379,11 +408,11 @@ def assess(runs, fit) -> Goodness:
             s = np.maximum(s, 1e-12)
             if repeated is None:
                 chi2, nu = chi_square(r, s, tare), float(pick.sum())
-                p, p_chi2 = float(stats.chi2.sf(chi2, nu)), None
+                p = float(stats.chi2.sf(chi2, nu))
             else:
                 if taken is None:
                     taken = np.bincount(fit.cluster, leverages(fit), minlength=n_steps)
-                chi2, nu, p, p_chi2 = _from_repeats(mean[here], repeated, [
+                chi2, nu, p = _from_repeats(mean[here], repeated, [
                     g for g in repeat_groups(steps, usable)
                     if steps["direction"].iloc[int(g[0])] == direction], tare, taken[here])
             order = np.argsort(steps["pressure_bar_mean"].to_numpy()[pick], kind="stable")
@@ -391,7 +420,7 @@ def assess(runs, fit) -> Goodness:
             branches.append(Branch(
                 run.name, branch, int(pick.sum()), chi2, nu, p if nu > 0 else math.nan,
                 n_runs, runs_p, float(np.sqrt(np.mean(r**2))), float(np.sqrt(np.mean(s**2))),
-                r, np.hypot(s, tare), p_chi2))
+                r, np.hypot(s, tare)))
     if not branches:
         return Goodness([], 0.0, 0.0, judged=False, why_not=NO_NOISE + "".join(
             "; too few repeats in a table to judge it by: "
@@ -477,23 +506,32 @@ def leverages(fit) -> np.ndarray:
 
 
 def _from_repeats(residual, repeats: Repeats, groups, tare: float, taken: np.ndarray):
-    """A branch's chi-square, degrees of freedom, p-value and the chi-square as probable, judged
-    against a noise its repeats measured: the groups' mean residuals against the repeats' noise
-    over root n (and the tare every step shares), a chi-square of ``G`` groups less what the
-    fit took of them (``taken``: each step's leverage, :func:`leverages`; the fit minimised
-    these very steps' residuals, so its parameters take their degrees of freedom, shared out
-    among the branches by their leverages), ``nu`` F(nu, dof) distributed where the model fits
-    (the noise estimated, not known). The chi-square itself measures the misfit (the Birge ratio
-    widens by it); its p-value is the F test's, and the chi-square of ``nu`` degrees of freedom
-    as probable is what all branches' p-value adds."""
+    """A branch's chi-square, degrees of freedom and p-value, judged against a noise its
+    repeats measured: the groups' mean residuals against the repeats' noise over root n (and
+    the tare every step shares), a chi-square of ``G`` groups less what the fit took of them
+    (``taken``: each step's leverage, :func:`leverages`; the fit minimised these very steps'
+    residuals, so its parameters take their degrees of freedom, shared out among the branches
+    by their leverages), ``nu`` F(nu, dof) distributed where the model fits (the noise
+    estimated, not known): :func:`f_test`. The chi-square itself measures the misfit (the Birge
+    ratio widens by it)."""
     means = np.array([residual[g].mean() for g in groups])
     spread = max(repeats.noise_N, 1e-12) / np.sqrt([g.size for g in groups])
     chi2 = chi_square(means, spread, tare)
     # a floor of a tenth of a group: a branch whose every step the fit follows exactly
     nu = max(len(groups) - float(sum(np.sum(taken[g]) for g in groups)), 0.1)
-    p = float(stats.f.sf(chi2 / nu, nu, repeats.dof))
+    return chi2, nu, f_test(chi2, nu, repeats.dof)[0]
+
+
+def f_test(chi2: float, nu: float, dof: float) -> tuple[float, float]:
+    """The p-value of ``chi2`` of ``nu`` degrees of freedom measured against a noise estimated
+    on ``dof`` (``chi2 / nu`` F(nu, dof) distributed where the model fits), and the chi-square
+    of ``nu`` degrees of freedom as probable, which all steps' p-value adds."""
+    # scipy.stats' f.sf and chi2.isf are these functions behind a check of their arguments
+    # that costs a hundred times the value (the size's test and benchmark call it thousands
+    # of times)
+    p = float(special.fdtrc(nu, dof, chi2 / nu))
     # beyond the F tail's floating point the chi-square itself, larger still
-    return chi2, nu, p, (float(stats.chi2.isf(p, nu)) if p > 0 else chi2)
+    return p, (float(special.chdtri(nu, p)) if p > 0 else chi2)
 
 
 #: what runs show that a fit may leave out, by the ``--params`` group that fits it
