@@ -250,7 +250,7 @@ class RawTable:
     #: the first cell of each row of the notes under the table, after a blank row (no data)
     footer_skipped: list[str] = field(default_factory=list)
     #: the block of rows under a record's samples that :func:`without_summary_block` left
-    #: out as their summary: its rows' time cells and why
+    #: out as their summary: its rows' time cells, their span as said and why
     block_skipped: dict = field(default_factory=dict)
     #: what :func:`join_by_time` joined to it: the other table, its columns, the times' origin
     joined: dict = field(default_factory=dict)
@@ -2688,9 +2688,10 @@ def without_summary_block(table: RawTable, time: Column) -> RawTable:
     few rows of means per pressure, a row of totals, as LabVIEW and Excel exports write them
     under the samples without a header of their own): the rows from a break (a blank row
     above, or other cells filled than in the row above; the last under which ``time`` goes
-    back, the rows above it in time order) to the end, no more than :data:`SUMMARY_BLOCK_MAX_ROWS` and :data:`SUMMARY_BLOCK_SHARE` of the
-    rows above, whose times do not step as the samples' do (step numbers, pressures, a hold's
-    time); their time cells and why in ``block_skipped``. ``ValueError`` naming the block
+    back, the rows above it in time order) to the end, no more than
+    :data:`SUMMARY_BLOCK_MAX_ROWS` and :data:`SUMMARY_BLOCK_SHARE` of the rows above, whose
+    times do not step as the samples' do (step numbers, pressures, a hold's time); their time
+    cells and why in ``block_skipped``. ``ValueError`` naming the block
     where its times step as the samples' do: a second record appended under a blank row,
     whose samples are not dropped. A time that goes back anywhere else is left to
     :func:`require_time_order`."""
@@ -2740,7 +2741,8 @@ def without_summary_block(table: RawTable, time: Column) -> RawTable:
     why = (f"{apart}, {header!r} going back to {_shown(rows[k][time.index])} there"
            + (f" and stepping by {block_step_s:.3g} s" if n > 1 else "")
            + f", where the {k} samples above step by {step_s:.3g} s")
-    return replace(table.kept(range(k)), block_skipped={"rows": cells, "why": why})
+    return replace(table.kept(range(k)), block_skipped={"rows": cells, "span": span,
+                                                        "why": why})
 
 
 #: a spreadsheet's error values, a formula that failed, saved into a CSV as their text: Excel's
@@ -3040,10 +3042,8 @@ class Recognition:
             extras.append(f"{len(footer)} row(s) of notes under the table skipped: "
                           + ", ".join(footer[:3]) + (", ..." if len(footer) > 3 else ""))
         if block := self.table.block_skipped:
-            rows = block["rows"]
-            extras.append(f"{len(rows)} row(s) under the samples skipped as their summary, no "
-                          f"samples: {rows[0]}" + (f" to {rows[-1]}" if len(rows) > 1 else "")
-                          + f" ({block['why']})")
+            extras.append(f"{len(block['rows'])} row(s) under the samples skipped as their "
+                          f"summary, no samples: {block['span']} ({block['why']})")
         if summaries := self.table.summaries_skipped:
             extras.append(f"{len(summaries)} summary row(s) skipped: "
                           + ", ".join(summaries[:3]) + (", ..." if len(summaries) > 3 else ""))
@@ -3468,6 +3468,7 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
     blocks = [(path.name, table.block_skipped) for path, table, _ in read
               if table.block_skipped]
     block = {"rows": [f"{name} {cell}" for name, b in blocks for cell in b["rows"]],
+             "span": ", ".join(f"{name} {b['span']}" for name, b in blocks),
              "why": "; ".join(f"{name}: {b['why']}" for name, b in blocks)} if blocks else {}
     table = replace(first, source=source, rows=rows, row_numbers=numbers, row_files=row_files,
                     preamble=preamble, block_skipped=block)

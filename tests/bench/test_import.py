@@ -1193,6 +1193,30 @@ def test_a_summary_block_under_a_records_samples_is_skipped_and_named(block, tmp
     np.testing.assert_allclose(run.steps["force_N_mean"], force, atol=0.01)
 
 
+def test_a_summary_block_under_each_joined_file_is_skipped_and_named(tmp_path, mkm_cli):
+    # one file per hold, each with its hold's mean under its samples: each file was refused
+    # as a time going backwards
+    force = thickwall_N(np.array([1.0, 2.0]), 0.0)
+    for j, level in enumerate((1.0, 2.0)):
+        t = np.round(np.arange(0.0, 20.0, 0.1), 1)
+        p = np.where(t < 2.0, level - 1.0, level)
+        rows = [f"{a:.1f};{b:.3f};{c:.2f}".replace(".", ",")
+                for a, b, c in zip(t, p, thickwall_N(p, 0.0) + 0.4, strict=True)]
+        mean = f"1;{level:.3f};{force[j] + 0.4:.2f}".replace(".", ",")
+        (tmp_path / f"step{j + 1}.csv").write_text(
+            "\n".join(["Zeit [s];Druck [bar];Kraft [N]", *rows, "", mean]) + "\n",
+            encoding="utf-8")
+    (run,), err = _import(mkm_cli, tmp_path / "step*.csv", *MUSCLE, "--eps", "0")
+    why = ("under a blank row, 'Zeit [s]' going back to '1' there, where the 200 samples above "
+           "step by 0.1 s")
+    assert (f"2 row(s) under the samples skipped as their summary, no samples: step1.csv A203, "
+            f"step2.csv A203 (step1.csv: {why}; step2.csv: {why})") in err, err
+    assert run.meta.imported_from["summary_block_skipped"]["rows"] == ["step1.csv A203",
+                                                                      "step2.csv A203"]
+    assert len(run.samples) == 400
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, atol=0.01)
+
+
 def test_a_second_record_under_a_blank_row_is_refused_naming_its_rows(tmp_path, mkm_cli):
     # samples logged again under a blank row, stepping as the record's do (a logger that
     # appended a second session), are no summary: refused naming them, nothing dropped
