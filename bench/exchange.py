@@ -1189,17 +1189,18 @@ def _zeros_between_steps(group: _Group, pressure, force, zero: float, declared, 
     zero read there, by a lab that vents to read or press its tare between steps, each such run
     of rows read as the zero of the rows from it to the next (its force's mean), the rows
     before the first tared at the 0 bar rows the table starts with (``zero`` where it starts
-    pressurised); the closing 0 bar rows keep the zero before them, their
-    difference ``zero_drift_N``. Each zero, its cells and its change from the one before in
+    pressurised); the closing 0 bar rows keep the zero before them, their difference
+    ``zero_drift_N``. Each zero, its cells and its change from the one before in
     ``zeros_between_steps``; a change beyond the declared force accuracy (or
     :data:`TABLE_ZERO_DRIFT_N` where none is declared) is warned of, as is the closing rows'
     difference beyond it. (notes, the start's zero, the zero at every row), or ``None`` where
     no 0 bar row lies between steps."""
     vented = pressure <= series.VENTED_THRESHOLD_BAR
     pressurised = np.flatnonzero(~vented)
+    if not pressurised.size:
+        return None
     row = np.arange(pressure.size)
-    between = vented & (row > pressurised[0]) & (row < pressurised[-1]) \
-        if pressurised.size else vented & False
+    between = vented & (row > pressurised[0]) & (row < pressurised[-1])
     if not between.any():
         return None
     lead = vented & (row < pressurised[0])
