@@ -84,6 +84,7 @@ from mkm.bench.tables import (
     with_milliseconds,
     without_blank_rows,
     without_repeated_rows,
+    without_summary_block,
     without_summary_rows,
 )
 from mkm.core.ranges import parse_number
@@ -497,8 +498,11 @@ def import_table(path: str | Path | list[str | Path], out_root: str | Path, musc
                                        f"force={h!r} --units force={weight}"
                                        for h, weight in weighed_columns(table)[:1]
                                        if "force" in missing))
-        table = without_blank_rows(without_summary_rows(table),
-                                   [found[r] for r in (*REQUIRED_ROLES, "time") if r in found])
+        table = without_summary_rows(table)
+        if "time" in found:
+            table = without_summary_block(table, found["time"])
+        table = without_blank_rows(table, [found[r] for r in (*REQUIRED_ROLES, "time")
+                                           if r in found])
         if "time" in found:  # a step table's rows may repeat a step; a record's are samples
             table = without_repeated_rows(table, [found[r] for r in ("time", *REQUIRED_ROLES)])
             check_channel_times(table, found)
@@ -1179,6 +1183,74 @@ def _table_zero_drift(group: _Group, pressure, force, zero: float, closing_rows,
         np.where(start < k, zero, closing)
 
 
+def _zeros_between_steps(group: _Group, pressure, force, zero: float, declared, handling):
+    """The note and the zero at every row of a step table vented between its pressurised steps
+    (a 0 bar row, or two where the sweep turns, with steps before and after it): the load cell's
+    zero read there, by a lab that vents to read or press its tare between steps, each such run
+    of rows read as the zero of the rows from it to the next (its force's mean), the rows
+    before the first tared at the 0 bar rows the table starts with (``zero`` where it starts
+    pressurised); the closing 0 bar rows keep the zero before them, their difference
+    ``zero_drift_N``. Each zero, its cells and its change from the one before in
+    ``zeros_between_steps``; a change beyond the declared force accuracy (or
+    :data:`TABLE_ZERO_DRIFT_N` where none is declared) is warned of, as is the closing rows'
+    difference beyond it. (notes, the start's zero, the zero at every row), or ``None`` where
+    no 0 bar row lies between steps."""
+    vented = pressure <= series.VENTED_THRESHOLD_BAR
+    pressurised = np.flatnonzero(~vented)
+    if not pressurised.size:
+        return None
+    row = np.arange(pressure.size)
+    between = vented & (row > pressurised[0]) & (row < pressurised[-1])
+    if not between.any():
+        return None
+    lead = vented & (row < pressurised[0])
+    zero = float(np.mean(force[lead])) if lead.any() else zero  # the start's rows alone
+    firsts = np.flatnonzero(between & ~np.r_[False, between[:-1]])
+    ends = np.flatnonzero(between & ~np.r_[between[1:], False]) + 1
+    closing = np.flatnonzero(vented & (row > pressurised[-1]))
+    zeros, recorded, warned = np.full(force.size, zero), [], []
+    before = zero
+
+    def cells(first: int, end: int) -> str:
+        return group.cell(first, "force") + ("" if end - first == 1 else
+                                             f" to {group.cell(end - 1, 'force')}")
+
+    def beyond(read: float, change_N: float) -> bool:
+        bound = (declared.absolute + declared.fraction * abs(read) if declared else
+                 TABLE_ZERO_DRIFT_N)
+        return abs(change_N) > bound * (1.0 + 1e-9)  # a change of the bound as written is within
+
+    for first, end in zip(firsts, ends, strict=True):
+        read = float(np.mean(force[first:end]))
+        zeros[first:] = read
+        recorded.append({"cells": cells(first, end), "zero_N": read,
+                         "change_N": read - before, "beyond_accuracy": beyond(read, read - before)})
+        if recorded[-1]["beyond_accuracy"]:
+            warned.append(f"{read - before:+.3g} N at {recorded[-1]['cells']}")
+        before = read
+    handling["zeros_between_steps"] = recorded
+    if closing.size:
+        read = float(np.mean(force[closing]))
+        handling["zero_drift_N"] = read - before
+        if beyond(read, read - before):
+            warned.append(f"{read - before:+.3g} N at {cells(closing[0], closing[-1] + 1)}, the "
+                          "closing 0 bar row(s), kept as read")
+    handling["tare"] += (", the start's rows alone; from each 0 bar row between steps on, the "
+                         "force that row reads")
+    accuracy = (f"the declared force accuracy (--accuracy force={declared.text})" if declared
+                else f"{TABLE_ZERO_DRIFT_N:g} N (no force accuracy declared: --accuracy "
+                "force=...)")
+    said = ", ".join(f"{r['zero_N']:.4g} N at {r['cells']}" for r in recorded)
+    return ([f"tare {zero:.4g} N subtracted, and from each 0 bar row between steps on the zero "
+             f"it reads, {said}: a load cell whose zero was read, or pressed again, vented "
+             f"between steps, each row tared at the zero read last before it; --tare "
+             f"{zero:.4g} keeps the start's zero throughout"]
+            + ([f"warning: the zero moved beyond {accuracy}, by {', '.join(warned)}: a load "
+                "cell drifting that much drifts within a step too, where no 0 bar row reads "
+                "it, or a muscle that did not come back reads so vented"] if warned else []),
+            zero, zeros)
+
+
 def _linear_tare(group: _Group, time_s, pressure, force, rest, handling):
     """``--tare linear``: the zero of a time series whose load cell drifted, the mean force of
     its rest before the rise and of the vented rest that ends it, joined by a line in time
@@ -1492,10 +1564,15 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
         drift, line, unread = _zero_drift(group, None, pressure, force, rest, handling)
     elif tare == "auto":
         handling["tare"] = "force at the lowest pressure of the rising branch"
-        drift, line = _table_zero_drift(
-            group, pressure, force, zero,
-            ~up & (pressure <= series.VENTED_THRESHOLD_BAR)
-            if zero_at <= series.VENTED_THRESHOLD_BAR else None, accuracy.get("force"), handling)
+        between = _zeros_between_steps(group, pressure, force, zero, accuracy.get("force"),
+                                       handling)
+        if between is not None:
+            drift, zero, line = between
+        else:
+            drift, line = _table_zero_drift(
+                group, pressure, force, zero, ~up & (pressure <= series.VENTED_THRESHOLD_BAR)
+                if zero_at <= series.VENTED_THRESHOLD_BAR else None, accuracy.get("force"),
+                handling)
     else:
         zero, handling["tare"] = force_sign * float(tare), "given"
         if zero >= float(np.nanmax(force)):  # every force <= 0: a muscle that never pulled
@@ -1507,7 +1584,7 @@ def _build(path: Path, sha: str, group: _Group, muscle, tare, vented, accuracy,
     handling["tare_N"] = zero
     if line is not None:
         force = force - line
-        if "zero_step" not in handling:  # its note says both zeros
+        if not {"zero_step", "zeros_between_steps"} & handling.keys():  # their notes say each
             notes.append(f"tare {zero:.4g} N at the start subtracted, then {handling['tare']}")
     elif zero:
         force = force - zero

@@ -249,6 +249,9 @@ class RawTable:
     summaries_skipped: list[str] = field(default_factory=list)
     #: the first cell of each row of the notes under the table, after a blank row (no data)
     footer_skipped: list[str] = field(default_factory=list)
+    #: the block of rows under a record's samples that :func:`without_summary_block` left
+    #: out as their summary: its rows' time cells, their span as said and why
+    block_skipped: dict = field(default_factory=dict)
     #: what :func:`join_by_time` joined to it: the other table, its columns, the times' origin
     joined: dict = field(default_factory=dict)
     #: the sampling interval its header block states, as written (LabChart's ``Interval=
@@ -314,6 +317,8 @@ class RawTable:
                 "rows_sharing_a_time_kept": self.times_shared,
                 "summary_rows_skipped": self.summaries_skipped,
                 "footer_rows_skipped": self.footer_skipped,
+                **({"summary_block_skipped": self.block_skipped} if self.block_skipped
+                   else {}),
                 **({"joined_by_time": self.joined} if self.joined else {}),
                 **({"tdms_properties": self.properties} if self.properties else {}),
                 **({"read_warnings": self.read_warnings} if self.read_warnings else {}),
@@ -2667,6 +2672,79 @@ def without_summary_rows(table: RawTable) -> RawTable:
     return replace(table.kept(keep), summaries_skipped=list(named.values()))
 
 
+#: the most rows under a record's samples that :func:`without_summary_block` reads as their
+#: summary (a few rows of means per pressure, or of totals) ...
+SUMMARY_BLOCK_MAX_ROWS = 20
+#: ... and at most this share of the rows above them
+SUMMARY_BLOCK_SHARE = 0.1
+#: the rows above such a block whose times give the samples' step
+SUMMARY_BLOCK_CONTEXT_ROWS = 200
+#: a block whose times step within this share of the samples' median step steps as they do
+SUMMARY_BLOCK_STEP_SHARE = 0.1
+
+
+def without_summary_block(table: RawTable, time: Column) -> RawTable:
+    """``table`` without the block of rows under a record's samples that summarises them (a
+    few rows of means per pressure, a row of totals, as LabVIEW and Excel exports write them
+    under the samples without a header of their own): the rows from a break (a blank row
+    above, or other cells filled than in the row above; the last under which ``time`` goes
+    back, the rows above it in time order) to the end, no more than
+    :data:`SUMMARY_BLOCK_MAX_ROWS` and :data:`SUMMARY_BLOCK_SHARE` of the rows above, whose
+    times do not step as the samples' do (step numbers, pressures, a hold's time); their time
+    cells and why in ``block_skipped``. ``ValueError`` naming the block
+    where its times step as the samples' do: a second record appended under a blank row,
+    whose samples are not dropped. A time that goes back anywhere else is left to
+    :func:`require_time_order`."""
+    rows, numbers = table.rows, table.row_numbers
+
+    def filled(k: int) -> list[bool]:
+        return [bool(str(c).strip()) for c in rows[k]]
+
+    # a block of a few rows under many: the breaks in the last rows, a tenth of them at most
+    first = max(1, len(rows) - SUMMARY_BLOCK_MAX_ROWS,
+                math.ceil(len(rows) / (1.0 + SUMMARY_BLOCK_SHARE)))
+    breaks = [k for k in range(first, len(rows))
+              if numbers[k] - numbers[k - 1] > 1 or filled(k) != filled(k - 1)]
+    if not breaks:
+        return table
+    above = max(0, breaks[0] - SUMMARY_BLOCK_CONTEXT_ROWS)
+    try:  # the samples above and the block, counted from the first of them
+        times = column_values(table.kept(range(above, len(rows))), time, optional=True)
+    except ValueError:
+        return table  # the bad cell is named where the record's time is read
+
+    def summary(k: int) -> bool:  # rows in time order above k, and k on going back
+        block, samples = times[k - above:], times[:k - above]
+        return samples.size >= 2 and not np.any(np.diff(samples) < 0) and bool(
+            block[0] < samples[-1] or np.any(np.diff(block) < 0))
+
+    # the last break under which the block goes back: a pause's samples above it stay
+    k = next((k for k in reversed(breaks) if summary(k)), None)
+    if k is None:
+        return table
+    block, samples = times[k - above:], times[:k - above]
+    n = len(rows) - k
+    header = time.header
+    cells = [table.ref(j, time.index) for j in range(k, len(rows))]
+    span = cells[0] if n == 1 else f"{cells[0]} to {cells[-1]}"
+    apart = ("under a blank row" if numbers[k] - numbers[k - 1] > 1 else
+             "its cells filled in other columns than the samples'")
+    step_s = float(np.median(np.diff(samples)))
+    block_step_s = float(np.median(np.diff(block))) if n > 1 else math.nan
+    if abs(block_step_s - step_s) <= SUMMARY_BLOCK_STEP_SHARE * step_s:
+        raise ValueError(f"{table.name}, rows {span} ({apart}): their {header!r} goes back "
+                         f"to {_shown(rows[k][time.index])} after "
+                         f"{_shown(rows[k - 1][time.index])} and steps by {block_step_s:.3g} "
+                         "s, as the samples above do: a second record appended to the file? "
+                         "expected one record per file; split the file there and import each, "
+                         "or delete those rows where they are no samples")
+    why = (f"{apart}, {header!r} going back to {_shown(rows[k][time.index])} there"
+           + (f" and stepping by {block_step_s:.3g} s" if n > 1 else "")
+           + f", where the {k} samples above step by {step_s:.3g} s")
+    return replace(table.kept(range(k)), block_skipped={"rows": cells, "span": span,
+                                                        "why": why})
+
+
 #: a spreadsheet's error values, a formula that failed, saved into a CSV as their text: Excel's
 #: in English, German and French (#N/A and #NV, a lookup that found nothing: :data:`NO_READING`)
 SPREADSHEET_ERRORS = ("#VALUE!", "#DIV/0!", "#REF!", "#NAME?", "#NUM!", "#NULL!", "#SPILL!",
@@ -2963,6 +3041,9 @@ class Recognition:
         if footer := self.table.footer_skipped:
             extras.append(f"{len(footer)} row(s) of notes under the table skipped: "
                           + ", ".join(footer[:3]) + (", ..." if len(footer) > 3 else ""))
+        if block := self.table.block_skipped:
+            extras.append(f"{len(block['rows'])} row(s) under the samples skipped as their "
+                          f"summary, no samples: {block['span']} ({block['why']})")
         if summaries := self.table.summaries_skipped:
             extras.append(f"{len(summaries)} summary row(s) skipped: "
                           + ", ".join(summaries[:3]) + (", ..." if len(summaries) > 3 else ""))
@@ -3243,6 +3324,7 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
             raise ValueError(f"{path.name}: no time column: expected one in each of the "
                              f"{len(paths)} files, to order them and keep the time between "
                              "them; import a file without one alone")
+        table = without_summary_block(table, found["time"])
         for role in ("pressure", "force"):  # a bad cell named in its own file
             if role in found:
                 column_values(table, found[role])
@@ -3383,8 +3465,13 @@ def join_files(paths: list[Path], columns=None, units=None, scaling=None,
     # every file's header lines, each named with its file (they agree: checked above)
     preamble = [(f"{path.name}, " + (f"line {at}" if isinstance(at, int) else str(at)), line)
                 for path, table, _ in read for at, line in table.preamble]
+    blocks = [(path.name, table.block_skipped) for path, table, _ in read
+              if table.block_skipped]
+    block = {"rows": [f"{name} {cell}" for name, b in blocks for cell in b["rows"]],
+             "span": ", ".join(f"{name} {b['span']}" for name, b in blocks),
+             "why": "; ".join(f"{name}: {b['why']}" for name, b in blocks)} if blocks else {}
     table = replace(first, source=source, rows=rows, row_numbers=numbers, row_files=row_files,
-                    preamble=preamble)
+                    preamble=preamble, block_skipped=block)
     found = {**first_found, "time": Column("time", index, first_found["time"].header, "s")}
     return JoinedFiles(table, found, files, clock, note, origin_s)
 

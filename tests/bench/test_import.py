@@ -1020,6 +1020,44 @@ def test_a_step_tables_closing_zero_that_drifted_is_said(closing_N, accuracy, sa
         "end the falling branch" not in err), err
 
 
+@pytest.mark.parametrize("accuracy, warned", [([], True), (["--accuracy", "force=2N"], False)])
+def test_a_step_table_vented_between_steps_is_tared_at_each_zero_read_there(accuracy, warned,
+                                                                            tmp_path, mkm_cli):
+    # a lab that vents between its steps and writes the load cell's zero there (its amplifier
+    # warming, 0.3 N at the start, 6.3 N at the end): every step kept the start's zero, the
+    # 4 bar step 4.6 N high, and the zero rows were told as a falling branch's drift
+    pressures = np.array([0, 1, 0, 2, 0, 3, 0, 4, 0])
+    zeros = np.array([0.3, 0.3, 1.8, 1.8, 3.4, 3.4, 4.9, 4.9, 6.3])
+    force = thickwall_N(pressures, 0.0)
+    path = tmp_path / "steps.csv"
+    pd.DataFrame({"Druck [bar]": pressures, "Kraft [N]": (force + zeros).round(2)}).to_csv(
+        path, sep=";", decimal=",", index=False)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0", *accuracy)
+    # each pressurised row its muscle's force, to the file's 0.01 N; each vented row between
+    # steps 0 N at its own zero, the closing one its 1.4 N from the zero before it
+    np.testing.assert_allclose(run.steps["force_N_mean"],
+                               np.r_[force[:8], zeros[8] - zeros[7]], atol=0.01)
+    record = run.meta.imported_from
+    assert record["tare_N"] == pytest.approx(0.3)
+    assert [z["cells"] for z in record["zeros_between_steps"]] == ["B4", "B6", "B8"]
+    np.testing.assert_allclose([z["zero_N"] for z in record["zeros_between_steps"]],
+                               [1.8, 3.4, 4.9], atol=1e-9)
+    np.testing.assert_allclose([z["change_N"] for z in record["zeros_between_steps"]],
+                               [1.5, 1.6, 1.5], atol=1e-9)
+    assert [z["beyond_accuracy"] for z in record["zeros_between_steps"]] == [warned] * 3
+    assert record["zero_drift_N"] == pytest.approx(1.4)
+    assert ("tare 0.3 N subtracted, and from each 0 bar row between steps on the zero it reads, "
+            "1.8 N at B4, 3.4 N at B6, 4.9 N at B8: a load cell whose zero was read, or pressed "
+            "again, vented between steps, each row tared at the zero read last before it; "
+            "--tare 0.3 keeps the start's zero throughout") in err, err
+    assert ("warning: the zero moved beyond 0.5 N (no force accuracy declared: --accuracy "
+            "force=...), by +1.5 N at B4, +1.6 N at B6, +1.5 N at B8, +1.4 N at B10, the "
+            "closing 0 bar row(s), kept as read") in err if warned else "warning" not in err
+    # --tare keeps the start's zero throughout
+    (kept,), _ = _import(mkm_cli, path, *MUSCLE, "--eps", "0", "--tare", "0.3")
+    np.testing.assert_allclose(kept.steps["force_N_mean"], force + zeros - 0.3, atol=0.01)
+
+
 def test_a_step_table_with_a_time_per_row_is_a_step_table(tmp_path, mkm_cli):
     # a logger that writes each hold's mean with its time, 30 s apart: 'no step found in the
     # time series', since no hold had the samples of a plateau
@@ -1101,6 +1139,106 @@ def test_milliseconds_since_midnight_go_on_past_midnight(tmp_path, mkm_cli):
     code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
                             str(tmp_path / "bad")])
     assert code == 2 and "the time goes backwards by 29.9 s" in err
+
+
+def _staircase_export(path: Path, tail: list[str]) -> np.ndarray:
+    """A German Excel export of a 10 Hz staircase, 1, 2 and 3 bar held 12 s each and vented
+    (a title line, semicolons, decimal commas, its load cell's zero at 0.4 N), then ``tail``
+    written under its samples as the lab's macro wrote it; the muscle's force at each hold."""
+    t = np.round(np.arange(0.0, 60.0, 0.1), 1)
+    p = np.interp(t, [0, 5, 6, 18, 19, 31, 32, 44, 45, 60],
+                  [0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 0.0, 0.0])
+    rows = [f"{a:.1f};{b:.3f};{c:.2f}".replace(".", ",")
+            for a, b, c in zip(t, p, thickwall_N(p, 0.0) + 0.4, strict=True)]
+    path.write_text("\n".join(["Messung LM30 05.12.2026 14:05", "Zeit [s];Druck [bar];Kraft [N]",
+                               *rows, *tail]) + "\n", encoding="utf-8")
+    return thickwall_N(np.array([1.0, 2.0, 3.0]), 0.0)
+
+
+#: the block a lab's macro writes under its samples without a header of its own: each hold's
+#: number, mean pressure and mean force (under a blank row); each hold's pressure, mean force,
+#: its spread and its count (a row wider than the samples'); the record's totals (one row)
+SUMMARY_BLOCKS = {
+    "means per hold": (["", "1;1,000;239,87", "2;2,000;580,12", "3;3,000;910,55"],
+                       "A604 to A606", "under a blank row, 'Zeit [s]' going back to '1' there "
+                       "and stepping by 1 s, where the 600 samples above step by 0.1 s"),
+    "wider rows": (["1,0;239,87;0,05;120", "2,0;580,12;0,06;120", "3,0;910,55;0,08;120"],
+                   "A603 to A605", "its cells filled in other columns than the samples', "
+                   "'Zeit [s]' going back to '1,0' there and stepping by 1 s, where the 600 "
+                   "samples above step by 0.1 s"),
+    "totals": (["", "36;2,000;17301,2"], "A604", "under a blank row, 'Zeit [s]' going back "
+               "to '36' there, where the 600 samples above step by 0.1 s"),
+}
+
+
+@pytest.mark.parametrize("block", SUMMARY_BLOCKS)
+def test_a_summary_block_under_a_records_samples_is_skipped_and_named(block, tmp_path, mkm_cli):
+    # an export with a block of means (or totals) under its samples, without a header of its
+    # own, was refused: "cell A604 (column 'Zeit [s]'): the time goes backwards by 58.9 s"
+    tail, cells, why = SUMMARY_BLOCKS[block]
+    path = tmp_path / "lm30.csv"
+    force = _staircase_export(path, tail)
+    (run,), err = _import(mkm_cli, path, *MUSCLE, "--eps", "0")
+    n = len(tail) - tail.count("")
+    assert (f"{n} row(s) under the samples skipped as their summary, no samples: {cells} "
+            f"({why})") in err, err
+    skipped = run.meta.imported_from["summary_block_skipped"]
+    assert len(skipped["rows"]) == n
+    assert [skipped["rows"][0], skipped["rows"][-1]] == [cells[:4], cells[-4:]]
+    assert skipped["why"] == why
+    # every sample kept, the block's rows none of them; each hold the muscle's force, to the
+    # file's 0.01 N (the 0.4 N zero tared)
+    assert len(run.samples) == 600 and run.samples["time_s"].max() == pytest.approx(59.9)
+    np.testing.assert_allclose(run.steps["set_pressure_bar"], [1.0, 2.0, 3.0])
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, atol=0.01)
+
+
+def test_a_summary_block_under_each_joined_file_is_skipped_and_named(tmp_path, mkm_cli):
+    # one file per hold, each with its hold's mean under its samples: each file was refused
+    # as a time going backwards
+    force = thickwall_N(np.array([1.0, 2.0]), 0.0)
+    for j, level in enumerate((1.0, 2.0)):
+        t = np.round(np.arange(0.0, 20.0, 0.1), 1)
+        p = np.where(t < 2.0, level - 1.0, level)
+        rows = [f"{a:.1f};{b:.3f};{c:.2f}".replace(".", ",")
+                for a, b, c in zip(t, p, thickwall_N(p, 0.0) + 0.4, strict=True)]
+        mean = f"1;{level:.3f};{force[j] + 0.4:.2f}".replace(".", ",")
+        (tmp_path / f"step{j + 1}.csv").write_text(
+            "\n".join(["Zeit [s];Druck [bar];Kraft [N]", *rows, "", mean]) + "\n",
+            encoding="utf-8")
+    (run,), err = _import(mkm_cli, tmp_path / "step*.csv", *MUSCLE, "--eps", "0")
+    why = ("under a blank row, 'Zeit [s]' going back to '1' there, where the 200 samples above "
+           "step by 0.1 s")
+    assert (f"2 row(s) under the samples skipped as their summary, no samples: step1.csv A203, "
+            f"step2.csv A203 (step1.csv: {why}; step2.csv: {why})") in err, err
+    assert run.meta.imported_from["summary_block_skipped"]["rows"] == ["step1.csv A203",
+                                                                      "step2.csv A203"]
+    assert len(run.samples) == 400
+    np.testing.assert_allclose(run.steps["force_N_mean"], force, atol=0.01)
+
+
+def test_a_second_record_under_a_blank_row_is_refused_naming_its_rows(tmp_path, mkm_cli):
+    # samples logged again under a blank row, stepping as the record's do (a logger that
+    # appended a second session), are no summary: refused naming them, nothing dropped
+    again = [f"{a:.1f};0,000;0,41".replace(".", ",") for a in np.arange(0.0, 1.0, 0.1)]
+    path = tmp_path / "lm30.csv"
+    _staircase_export(path, ["", *again])
+    code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                            str(tmp_path / "runs")])
+    assert code == 2 and err.count("\n") == 1
+    assert ("lm30.csv, rows A604 to A613 (under a blank row): their 'Zeit [s]' goes back to "
+            "'0,0' after '59,9' and steps by 0.1 s, as the samples above do: a second record "
+            "appended to the file? expected one record per file; split the file there and "
+            "import each, or delete those rows where they are no samples") in err, err
+    assert not (tmp_path / "runs").exists()
+    # without a blank row, or more rows than a summary's, the time going back is refused as any
+    longer = [f"{a:.1f};0,000;0,41".replace(".", ",") for a in np.arange(0.0, 3.0, 0.1)]
+    for tail, cell in ((again, "A603"), (["", *longer], "A604")):
+        _staircase_export(path, tail)
+        code, _, err = mkm_cli(["import", str(path), *MUSCLE, "--eps", "0", "--out",
+                                str(tmp_path / "runs")])
+        assert code == 2 and (f"lm30.csv, cell {cell} (column 'Zeit [s]'): the time goes "
+                              "backwards by 59.9 s") in err, err
 
 
 def test_an_arduinos_micros_clock_goes_on_past_its_32_bit_overflow(tmp_path, mkm_cli):
