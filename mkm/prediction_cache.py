@@ -184,7 +184,8 @@ def _store(prediction: Prediction, path: Path) -> None:
     arrays["meta"] = np.array(json.dumps(meta, default=repr))
     buffer = io.BytesIO()
     np.savez(buffer, **arrays)
-    write_atomic(path, buffer.getvalue())
+    # not synced: an entry a power loss cut short is read as a miss (_load_entry)
+    write_atomic(path, buffer.getvalue(), sync=False)
 
 
 def _load_entry(path: Path) -> Prediction | None:

@@ -124,11 +124,13 @@ def package_file(package: str, *parts: str) -> Path:
     return Path(str(files(package).joinpath(*parts))).resolve()
 
 
-def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
+def write_atomic(path: str | os.PathLike, data: str | bytes, *, sync: bool = True) -> Path:
     """Write ``data`` (text as UTF-8) to ``path`` through a temporary file and ``os.replace``.
 
-    The file is synced before the rename, so a power loss leaves the old file or the new one;
-    its permissions follow the umask (``mkstemp`` alone would make it private to its writer).
+    The file is synced before the rename (``sync``), so a power loss leaves the old file or the
+    new one; its permissions follow the umask (``mkstemp`` alone would make it private to its
+    writer). A cache whose reader takes a damaged entry for a miss needs no sync: a sync costs
+    milliseconds on a disk, more than a cheap model's whole sweep.
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -143,7 +145,8 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> Path:
         with os.fdopen(fd, "wb") as f:
             f.write(data.encode("utf-8") if isinstance(data, str) else data)
             f.flush()
-            os.fsync(f.fileno())
+            if sync:
+                os.fsync(f.fileno())
         _move(Path(tmp), path, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)

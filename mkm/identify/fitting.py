@@ -197,7 +197,10 @@ class ModelStatic(StaticSource):
     runs' sweeps of one call together on the FE batch runner ``runner``
     (:func:`mkm.prediction_cache.predict_many`: local workers or a Dask cluster), through the
     prediction cache ``cache_dir`` (a repeated identification solves nothing
-    again; None: no cache)."""
+    again; None: no cache). A model the registry does not call expensive (thick-wall: a sweep
+    in microseconds) is solved without the cache: its entry would cost more to write than the
+    sweep, and a fit's thousands of trial points would fill the cache with entries no later
+    call asks for."""
 
     def __init__(self, spec: str, runner=None, cache_dir=DEFAULT_CACHE_DIR):
         from mkm.fem.ladder import STATIC_FAMILIES
@@ -214,7 +217,8 @@ class ModelStatic(StaticSource):
             raise ValueError(f"--model {spec!r} has no rubber: expected a model that takes "
                              "theta0_deg, C10_MPa and C01_MPa (axisym, thickwall)")
         self.name = self.spec.text
-        self.runner, self.cache_dir = runner, cache_dir
+        self.runner = runner
+        self.cache_dir = cache_dir if self.spec.entry.expensive else None
         self.calls = 0
 
     def model(self, values: dict, L0_mm: float):
