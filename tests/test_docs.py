@@ -2922,34 +2922,60 @@ def test_the_guides_lag_between_monitor_and_muscle_is_its_measured_file():
 
 
 def test_the_guides_search_model_note_is_its_measured_files():
-    """calibration.md's row on the note that sends the user to ``--search model``: the draws of
-    ``identify_wrong_range.json`` and ``identify_wrong_range_lag.json`` that printed it
+    """calibration.md's rows on the note that sends the user to ``--search model`` and on the
+    one that withholds it on a misfit the rubber's ratio does not explain: the draws of
+    ``identify_wrong_range.json`` and ``identify_wrong_range_lag.json`` that printed either
     end-to-end (identify's defaults on simulated runs), each with the ratio and interval the FE
-    model's step gave and whether it holds the truth."""
+    model's step gave, whether it holds the truth, and the share of the misfit the ratio freed
+    takes away (:data:`mkm.identify.procedure.RATIO_EXPLAINS_MISFIT`, half, sets which note)."""
     import json
+
+    from mkm.identify.procedure import RATIO_EXPLAINS_MISFIT
 
     records = [json.loads((DOCS / "measured" / name).read_text(encoding="utf-8"))
                for name in ("identify_wrong_range.json", "identify_wrong_range_lag.json")]
     text = " ".join((DOCS / "guide" / "calibration.md").read_text(encoding="utf-8").split())
     draws = [d for r in records for d in r["draws"]]
-    seen = [(d, n) for d in draws for n in d["notes"] if "the FE model may separate them" in n]
-    assert (f"identify's defaults printed it on {len(seen)} of the {len(draws)} draws recorded "
+    assert RATIO_EXPLAINS_MISFIT == 0.5
+    assert "the ratio freed takes away at least half of the misfit's excess chi2/nu over 1" in text
+
+    def truth(draw):
+        return draw["muscle"]["truth"]["C01_MPa"] / draw["muscle"]["truth"]["C10_MPa"]
+
+    given = [(d, n) for d in draws for n in d["notes"] if "the FE model may separate them" in n]
+    assert (f"identify's defaults printed it on {len(given)} of the {len(draws)} draws recorded "
             "in `identify_wrong_range.json` and `identify_wrong_range_lag.json`") in text
-    for draw, note in seen:
+    for draw, note in given:
         ratio, low, high = re.search(r"puts C01/C10 at (\S+) \(95 % interval (\S+)-(\S+), "
                                      r"linearised", note).groups()
-        truth = draw["muscle"]["truth"]["C01_MPa"] / draw["muscle"]["truth"]["C10_MPa"]
-        holds = float(low) <= truth <= float(high)
-        assert (f"seed {draw['seed']}, " in text and f" {ratio} ({low}-{high}), "
-                + ("holding the truth" if holds else f"the truth's {truth:.3g} outside it")
-                in text)
-        if draw["departure"] == "rest length":
-            short = 100 * (1 - draw["muscle"]["declared_L0_mm"] / draw["muscle"]["L0_mm"])
-            assert (f"seed {draw['seed']}, its rest length declared {short:.2f} % short "
-                    f"(chi2/nu {draw['chi2_per_nu']:.3g}), {ratio} ({low}-{high})") in text
-        else:
-            assert (f"seed {draw['seed']}, a {draw['muscle']['D0_mm']:.3g} mm tube of C01/C10 "
-                    f"{truth:.1g}, {ratio} ({low}-{high})") in text
+        holds = float(low) <= truth(draw) <= float(high)
+        assert (f"seed {draw['seed']}, a {draw['muscle']['D0_mm']:.3g} mm tube of C01/C10 "
+                f"{truth(draw):.1g}, {ratio} ({low}-{high}), "
+                + ("holding the truth" if holds else f"the truth's {truth(draw):.3g} outside it")
+                ) in text
+        if draw["misfit_line"]:
+            # the fit with the ratio free, as the misfit line gives it
+            freed = float(re.search(r"\(chi2/nu (\S+)\), not to within the noise",
+                                    draw["misfit_line"]).group(1))
+            share = (draw["chi2_per_nu"] - freed) / (draw["chi2_per_nu"] - 1)
+            assert share >= RATIO_EXPLAINS_MISFIT
+            assert (f"on a misfit (chi2/nu {draw['chi2_per_nu']:.3g}) of which the ratio freed "
+                    f"takes away {100 * share:.2g} %") in text
+    withheld = [(d, n) for d in draws for n in d["notes"]
+                if "so no search for the ratio is advised" in n]
+    assert [d["departure"] for d, _ in withheld] == ["rest length"]
+    for draw, note in withheld:
+        share = re.search(r"the ratio freed takes away (\S+) % of it", note).group(1)
+        assert float(share) < 100 * RATIO_EXPLAINS_MISFIT
+        step = draw["fe_ratio_test"]
+        low, high = step["ratio_ci"]
+        assert step["separates"] and not low <= truth(draw) <= high
+        short = 100 * (1 - draw["muscle"]["declared_L0_mm"] / draw["muscle"]["L0_mm"])
+        assert (f"Of the {len(draws)} draws, seed {draw['seed']}, its rest length declared "
+                f"{short:.2f} % short (chi2/nu {draw['chi2_per_nu']:.3g}), is told so: the "
+                f"ratio freed takes away {share} % of its misfit, and the step would have put "
+                f"C01/C10 at {step['ratio']:.3g} ({low:.3g}-{high:.3g}), the truth's "
+                f"{truth(draw):.3g} outside it") in text
 
 
 def test_the_guides_first_cycle_softening_is_its_measured_file():
