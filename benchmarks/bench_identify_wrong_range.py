@@ -64,7 +64,9 @@ held length's and the stretched fibres': of the surrogate where the fit searched
 of the FE model), ``fibres`` the stretch of the braid's fibres named, ``braid_refit_sweeps`` and
 ``braid_refit_seconds`` the sweeps and seconds of the refits without a creep over before the
 holds start with each braid (one sweep per run and evaluation, up to 7 evaluations
-per braid; 0 where none ran).
+per braid; 0 where none ran), ``fe_ratio_test`` the FE model's own test of the rubber's ratio
+where the surrogate's box cut it (:func:`mkm.identify.procedure.fe_ratio_test`; null where none
+ran), whether or not a note gives it.
 Prints one row per draw and the counts per departure; ``--out`` writes them (``rows``: one per
 draw, with what its verdict names first; ``summary``: per departure), every draw's
 parameters, notes and verdict line, the seeds and provenance.
@@ -256,7 +258,7 @@ def one(muscle: dict, out: Path) -> dict:
            softening=next(({k: v for k, v in w.items() if k not in ("said", "verdict")}
                            for w in result.instrument_warnings
                            if w["what"] == "first-cycle softening"), None),
-           **braid_refit(result))
+           fe_ratio_test=result.rubber.get("fe_ratio_test"), **braid_refit(result))
     return row
 
 

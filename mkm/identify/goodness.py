@@ -218,15 +218,19 @@ class Goodness:
             + (f" structured (runs test p={b.runs_p:.2g})" if b.runs_p < STRUCTURE_P else "")
             for b in bad[:4])
         more = f"; and {len(bad) - 4} more" if len(bad) > 4 else ""
+        return (f"misfit: {shown}{more}: the model does not follow these steps within their "
+                f"noise, intervals widened by x{self.birge_ratio:.3g} ({self._left_out()}"
+                f"{self._ratio_said()}the estimates may be biased too: {self.checks()})")
+
+    def checks(self) -> str:
+        """What to check on a misfit no term of the fit explains: the instruments, the
+        muscle's wall and braid, and a rest length or a gap not fitted."""
         # a rest length or a gap the runs do not declare misfits as an instrument does, and
         # identify can fit both
         unfitted = [what for name, what in UNDECLARED.items() if name not in self.fitted]
         fit_them = f"; or fit {' or '.join(unfitted)}" if unfitted else ""
-        return (f"misfit: {shown}{more}: the model does not follow these steps within their "
-                f"noise, intervals widened by x{self.birge_ratio:.3g} ({self._left_out()}"
-                f"{self._ratio_said()}the estimates may be biased too: check the monitor's "
-                "zero, the load cell's calibration, the muscle's wall and braid"
-                f"{fit_them})")
+        return ("check the monitor's zero, the load cell's calibration, the muscle's wall and "
+                f"braid{fit_them}")
 
     def _ratio_said(self) -> str:
         """The rubber's ratio as what the fit lacks, where freeing it lowers chi2 beyond

@@ -530,6 +530,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
                          f"{said} ratio {assumed:.3g} assumed; the C10 and "
                          "C01 written are that assumption's (the stiffness the runs fix, "
                          f"not two measured constants){_declared_holds_ratio(rubber)}")
+    fitness = goodness.assess(runs, best)
+    fitness.ratio_freed = ratio_freed(rubber)
     if "rubber_scale" in best.names and _box_cut_the_ratio(rubber):
         notify(f"the surrogate's box cut the test of C10 and C01: would {fe.name} separate them? "
                "(two or three sweeps per run)")
@@ -538,8 +540,8 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
         except RuntimeError as exc:  # no FE force at the ratio stepped to: nothing to advise
             rubber["fe_ratio_test"] = {"skipped": str(exc), "separates": False}
         if rubber["fe_ratio_test"]["separates"]:
-            notes.append(search_model_note(rubber["fe_ratio_test"], runs, command_options(
-                groups, fe.name, "model", None)))
+            notes.append(fe_ratio_note(rubber["fe_ratio_test"], rubber, fitness, runs,
+                                       command_options(groups, fe.name, "model", None)))
     if "rubber_scale" in best.names and not rubber["separated"]:
         notify("the assumed rubber ratio: refits at the ends of what the runs allow")
         with warnings.catch_warnings(record=True) as caught:
@@ -547,8 +549,6 @@ def _identify(runs, groups, fe, search, surrogate, seed, notify, started, notes,
             rubber["assumed_ratio_terms"] = _assumed_ratio_terms(source, runs, best, rubber)
         notes += _outside_box(caught, "the refits at the ends of the assumed rubber ratio",
                               "the prediction band's rubber-ratio term is extrapolated there")
-    fitness = goodness.assess(runs, best)
-    fitness.ratio_freed = ratio_freed(rubber)
     # a group whose fit did not converge, or that was fitted and the BIC dropped, is not
     # offered as what the fit lacks: asking for it again would repeat this fit
     fitness.shown = tuple(g for g in fitness.shown if g not in given_up and g not in groups)
@@ -1844,6 +1844,45 @@ def search_model_note(test: dict, runs, options) -> str:
             f"{test['assumed_from']} {test['assumed']:.3g}); to test it, identify again with the "
             f"FE model searching (one sweep per run and evaluation): mkm identify {paths} "
             f"{' '.join(map(one_argument, options))}")
+
+
+#: the share of a misfit's excess chi2/nu over 1 that the fit with the rubber's ratio free
+#: must take away for the FE model's step with the ratio free to be read as the rubber's:
+#: below it the step is taken at an optimum the misfit has moved, and points where the misfit
+#: pulls (docs/guide/calibration.md names the draws it was set on)
+RATIO_EXPLAINS_MISFIT = 0.5
+
+
+def misfit_share_freed(fitness, rubber: dict) -> float | None:
+    """The share of the misfit's excess chi2/nu over 1 that the fit with the rubber's ratio
+    free (``rubber["free_chi2_per_nu"]``) takes away; None where the ratio was not freed or
+    the fit was not judged, or chi2/nu is not above 1 (a branch alone misfits)."""
+    freed = rubber.get("free_chi2_per_nu")
+    if freed is None or not fitness.reduced > 1:
+        return None
+    return (fitness.reduced - freed) / (fitness.reduced - 1)
+
+
+def fe_ratio_note(test: dict, rubber: dict, fitness, runs, options) -> str | None:
+    """The note on the FE model's own test of the ratio (:func:`fe_ratio_test`) where it would
+    separate C10 and C01: the command that tests it (:func:`search_model_note`) where the fit
+    follows the runs within their noise or the ratio freed takes away at least
+    :data:`RATIO_EXPLAINS_MISFIT` of the misfit (:func:`misfit_share_freed`); else no search
+    direction: the misfit first, and what to check. None where it would not separate them."""
+    if not test["separates"]:
+        return None
+    share = misfit_share_freed(fitness, rubber)
+    if not fitness.misfit or (share is not None and share >= RATIO_EXPLAINS_MISFIT):
+        return search_model_note(test, runs, options)
+    freed = ("the rubber's ratio was not freed" if share is None else
+             f"the ratio freed takes away {100 * share:.2g} % of it (chi2/nu "
+             f"{rubber['free_chi2_per_nu']:.3g})")
+    return (f"the surrogate's box cut the test of C10 and C01, and the FE model's change with the "
+            f"ratio at this optimum would separate them, but the fit misfits (chi2/nu "
+            f"{fitness.reduced:.3g}) and {freed}: the step is taken at an optimum the misfit "
+            "has moved and points where the misfit pulls, so no search for the ratio is "
+            f"advised; explain the misfit first ({fitness.checks()}) and identify again, which "
+            "tests the ratio again")
 
 
 def fe_ratio_test(source, fe: ModelStatic, runs, best, braid: str | None) -> dict:

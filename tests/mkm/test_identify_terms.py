@@ -1593,6 +1593,64 @@ def test_the_search_model_note_gives_the_command_to_type():
         "runs/b --params theta0,rubber,friction,creep,offset --model axisym --search model")
 
 
+def test_a_misfit_the_ratio_does_not_explain_gets_no_search_direction():
+    """The FE model's step with the ratio free is read as the rubber's only where the fit
+    follows the runs within their noise or the ratio freed takes away at least half of the
+    misfit's excess chi2/nu; else the note sends the user to the misfit, not to a search. The
+    numbers are the two draws of ``benchmarks/bench_identify_wrong_range.py`` that printed the
+    note (60 steps each): seed 20261607 (a tubing lag of 1.44 s, the truth's C01/C10 0.0001)
+    chi2/nu 40.7 lowered to 10.7 with the ratio free, its step 0.0195 (0-0.109); seed 20261617
+    (its rest length declared 2.72 % short, the truth's C01/C10 0.0974) chi2/nu 2658 lowered
+    to 2613, its step 8.86 (0.944-999), the truth the other way."""
+    from scipy import stats
+
+    from mkm.identify import goodness
+    from mkm.identify.procedure import (
+        RATIO_EXPLAINS_MISFIT,
+        fe_ratio_note,
+        misfit_share_freed,
+        search_model_note,
+    )
+
+    def judged(chi2_per_nu):
+        nu = 60.0
+        chi2 = chi2_per_nu * nu
+        branch = goodness.Branch("r", "loading", 60, chi2, nu, float(stats.chi2.sf(chi2, nu)),
+                                 30, 0.5, 1.0, 1.0)
+        return goodness.Goodness([branch], chi2, nu, fitted=("theta0_deg", "rubber_scale"))
+
+    test = {"ratio": 8.856, "ratio_ci": [0.944, 999.0], "assumed": 0.9049,
+            "assumed_from": "Silastic S's", "sweeps": 12, "separates": True}
+    runs = [SimpleNamespace(path=Path("runs/a")), SimpleNamespace(path=Path("runs/b"))]
+    options = ["--params", "theta0,rubber,friction,creep,offset", "--search", "model"]
+    direction = search_model_note(test, runs, options)
+    lag, rest = judged(40.70), judged(2658.3)
+    assert misfit_share_freed(lag, {"free_chi2_per_nu": 10.70}) == pytest.approx(30 / 39.7)
+    assert misfit_share_freed(rest, {"free_chi2_per_nu": 2613.3}) == pytest.approx(45 / 2657.3)
+    assert 45 / 2657.3 < RATIO_EXPLAINS_MISFIT <= 30 / 39.7
+    # the ratio takes away three quarters of the misfit: its step is the rubber's
+    assert fe_ratio_note(test, {"free_chi2_per_nu": 10.70}, lag, runs, options) == direction
+    # 1.7 %: the step is the misfit's; the note names what to check instead, the rest length
+    # among what the fit may add
+    withheld = fe_ratio_note(test, {"free_chi2_per_nu": 2613.3}, rest, runs, options)
+    assert withheld == (
+        "the surrogate's box cut the test of C10 and C01, and the FE model's change with the "
+        "ratio at this optimum would separate them, but the fit misfits (chi2/nu 2.66e+03) and "
+        "the ratio freed takes away 1.7 % of it (chi2/nu 2.61e+03): the step is taken at an "
+        "optimum the misfit has moved and points where the misfit pulls, so no search for the "
+        "ratio is advised; explain the misfit first (check the monitor's zero, the load cell's "
+        "calibration, the muscle's wall and braid; or fit its rest length (--params ...,L0: a "
+        "first length already shortened) or a gap between tube and braid (--params ...,gap)) "
+        "and identify again, which tests the ratio again")
+    assert "--search model" not in withheld and "8.86" not in withheld
+    # the ratio not freed on a misfit: nothing says the step is the rubber's
+    assert "the rubber's ratio was not freed:" in fe_ratio_note(test, {}, lag, runs, options)
+    # within the noise the step is read as it is, whatever the ratio freed did
+    assert fe_ratio_note(test, {"free_chi2_per_nu": 1.0}, judged(1.0), runs, options) == (
+        direction)
+    assert fe_ratio_note({**test, "separates": False}, {}, rest, runs, options) is None
+
+
 def line_fit(x, y, slope: float, slope_bounds=(0.0, 1.0)) -> Fit:
     """``F = a x + b`` at the slope ``a`` with ``b`` refitted (the least-squares line of that
     slope), one sample per step, one run."""
