@@ -1966,6 +1966,43 @@ def test_the_published_pages_accuracy_figures_are_its_measured_file():
     assert not any(r["consistent"] for r in data["report"] if r["model"] == "eq2")
 
 
+def test_every_page_imports_the_published_maps_with_the_tables_geometry():
+    """Every ``mkm import`` of the shipped published maps a page shows (the guide, the
+    validation page, the table's README) gives each muscle the nominal D0 and the wall the
+    table's own columns hold (the third party's, the one source of a Festo wall: the
+    DMSP-10-250's 1.8 mm), the value ``bench_published.py`` imports it with: the pages
+    declared that muscle's wall 1.5 mm on one and 1.8 mm on another."""
+    import shlex
+
+    import pandas as pd
+
+    from mkm.paths import published_table
+
+    name = "martens_boblan_2017_forcemaps.csv"
+    table = pd.read_csv(published_table(name), comment="#").groupby("muscle").first()
+    pages = [*sorted(p for p in DOCS.rglob("*.md") if not {"_build", "_generated"} & set(
+        p.relative_to(DOCS).parts)), ROOT / "mkm" / "data" / "published" / "README.md"]
+    imports = []
+    for page in pages:
+        text = " ".join(page.read_text(encoding="utf-8").replace("\\\n", " ").split())
+        for found in re.finditer(rf"mkm import {re.escape(name)}((?: --[\w-]+(?: (?:\"[^\"]*\""
+                                 r"|[^\s`\"-][^\s`]*))?)*)", text):
+            argv = shlex.split(found.group(1))
+            options = dict(zip(argv[::2], argv[1::2], strict=True))
+            imports.append((page.name, options))
+    assert {page for page, _ in imports} >= {"published.md", "design.md", "run-folder.md",
+                                              "threshold.md", "README.md"}
+    muscles = {options["--muscle"] for _, options in imports}
+    assert muscles == set(table.index)
+    for page, options in imports:
+        row = table.loc[options["--muscle"]]
+        assert (float(options["--D0"]), float(options["--t0"])) == (
+            row["D0_nominal_mm"], row["t0_mm_third_party"]), (page, options)
+    bench = _benchmark("bench_published")
+    assert {m: (D0, t0) for m, (_, D0, t0) in bench.MUSCLES.items()} == {
+        m: (row["D0_nominal_mm"], row["t0_mm_third_party"]) for m, row in table.iterrows()}
+
+
 def test_the_guides_drifting_load_cell_is_its_measured_file():
     """uncertainty.md's words on identify with a drifting load-cell zero: held to
     ``identify_wrong_bench_drift.json`` (every draw covered and warned, chi2/nu, theta0)."""
