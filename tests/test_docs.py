@@ -1301,6 +1301,26 @@ def test_the_design_pages_fe_verification_is_its_measured_file():
             "`design.json` was measured again with the wall's own)") in text
 
 
+def test_the_design_pages_identified_dmsp_20_is_its_measured_file():
+    """design.md's DMSP-20-300 identified and designed for: its lines are the commands
+    ``bench_design_identified.py`` ran, and the output it quotes, design's line on the
+    identified band, and identify's chi2/nu, are what they printed
+    (``design_identified.json``)."""
+    import json
+
+    record = json.loads((DOCS / "measured" / "design_identified.json").read_text(
+        encoding="utf-8"))
+    assert record["commands"] == _benchmark("bench_design_identified").COMMANDS
+    text = (DOCS / "guide" / "design.md").read_text(encoding="utf-8")
+    block = text[text.index(f"    {record['commands'][0]}\n"):].split("\n\n", 1)[0]
+    assert [line.removeprefix("    ") for line in block.splitlines()] == [
+        *record["commands"], "...", record["band_line"]]
+    chi2 = re.search(r"\(chi2/nu ([\d.]+)\)", record["verdict"]).group(1)
+    assert (f"identified with the FE on its runs at eps 0 and 0.0473 (chi2/nu {chi2}; "
+            "`benchmarks/bench_design_identified.py --out docs/measured/design_identified.json` "
+            "runs these lines and keeps what they print):") in " ".join(text.split())
+
+
 def test_the_design_pages_steeper_braid_cost_is_its_measured_file():
     """design.md quotes the CPU time of the chosen design's solve with its braid 1 deg steeper
     (the steeper-braid note's) against the verification's, and the load it was measured at:
