@@ -41,6 +41,7 @@ import time
 from pathlib import Path
 
 import pandas as pd
+from bench_threshold_models import read_maps
 
 from mkm.cli import main as mkm
 from mkm.core.records import file_sha256, provenance
@@ -50,10 +51,9 @@ from mkm.registry import parse_specs
 from mkm.report import build_report
 
 TABLE = published_table("martens_boblan_2017_forcemaps.csv")
-#: the table's muscles: its name in the muscle column, the id, nominal D0 and the third
-#: party's wall (the file's header says where each comes from)
-MUSCLES = {"Festo DMSP-20-300": ("dmsp-20", 20.0, 1.8), "Festo DMSP-10-250": ("dmsp-10", 10.0,
-                                                                               1.8)}
+#: the table's muscles: its name in the muscle column, the id, and the nominal D0 and the third
+#: party's wall the table gives (its header says where each comes from)
+MUSCLES = {m.muscle: (f"dmsp-{m.D0_mm:g}", m.D0_mm, m.t0_mm) for m in read_maps(TABLE)}
 IDENTIFY_EPS = (0.0, 0.10)  # the rest length and the length nearest this
 #: what the leave-one-length-out identification fits: the wall too (Festo publishes none)
 LOO_PARAMS = "theta0,rubber,t0,offset"
@@ -127,14 +127,14 @@ def with_accuracy(work: Path) -> dict:
     from mkm.bench.storage import read_meta
 
     name = "Festo DMSP-10-250"
-    muscle_id, D0, _ = MUSCLES[name]
-    paths = _quiet(["import", str(TABLE), "--id", muscle_id, "--D0", str(D0), "--t0", "1.5",
+    muscle_id, D0, t0 = MUSCLES[name]
+    paths = _quiet(["import", str(TABLE), "--id", muscle_id, "--D0", str(D0), "--t0", str(t0),
                     "--muscle", name, "--accuracy", ACCURACY,
                     "--out", str(work / "accuracy")])
     eps = {p: read_meta(p).muscle.eps for p in paths}
     two = [p for p in paths if any(abs(eps[p] - e) < 1e-9 for e in ACCURACY_EPS)]
     rest = [p for p in paths if eps[p] == 0.0]
-    out: dict = {"accuracy": ACCURACY, "muscle": name, "t0_mm": 1.5}
+    out: dict = {"accuracy": ACCURACY, "muscle": name, "t0_mm": t0}
     for label, chosen in (("identified", two), ("with the rest length", rest + two)):
         folder = work / f"accuracy-{len(chosen)}"
         _quiet(["identify", *chosen, "--workers", "1", "--out", str(folder)])

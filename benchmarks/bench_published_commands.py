@@ -36,14 +36,15 @@ import tempfile
 import time
 from pathlib import Path
 
+from bench_published import ACCURACY, MUSCLES
+from bench_published import ACCURACY_EPS as IDENTIFY_EPS
+
 from mkm.core.home import CACHE_ENV
 
 TABLE = "martens_boblan_2017_forcemaps.csv"
 #: the import of published.md's "With the instruments' accuracy" (after ``--out``)
-IMPORT = ["--id", "dmsp-10", "--D0", "10", "--t0", "1.5", "--muscle", "Festo DMSP-10-250",
-          "--accuracy", "force=0.5N+1%,pressure=0.01bar"]
-#: the lengths identified there
-IDENTIFY_EPS = (0.064, 0.184)
+IMPORT = ["--id", "dmsp-10", "--D0", "10", "--t0", f"{MUSCLES['Festo DMSP-10-250'][2]:g}",
+          "--muscle", "Festo DMSP-10-250", "--accuracy", ACCURACY]
 #: issue 34's targets [s]
 TARGETS = {"identify": 30.0, "report": 60.0}
 

@@ -436,6 +436,7 @@ QUOTED_RUNS = {
                                    "9,10,11,12,13,14,15,16,17,19 --out {out}",
     "design_band_fresh.json": "benchmarks/bench_design_band_fresh.py --points 500 --seed "
                               "2026120741 --out {out}",
+    "design_identified.json": "benchmarks/bench_design_identified.py --out {out}",
     "overforce_band.json": "benchmarks/bench_overforce_band.py --draws 12 --out {out}",
     "surrogate_range_decline.json": "benchmarks/bench_surrogate_decline.py --seeds 20261225 "
                                     "20261228 20261701 20261702 20261703 20261704 20261705 "

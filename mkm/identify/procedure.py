@@ -911,19 +911,14 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
         rest_said = ("" if "L0_mm" in best.names else
                      f" and a rest length declared wrong by {rest_lowered:.3g}")
         within = with_fibres <= fitness.nu
-        check = ("check the frame's stiffness and measure the fibres (a strand's force over its "
-                 "strain, times the strands), then identify again" if table is None else
-                 f"{table} was measured on its authors' bench and braid: ask them for their "
-                 "frame's stiffness and their braid's fibres, else predict with the intervals")
+        check = fibres_advice(table, tied)
         apart = (f"; they lower it within {FRAME_OR_FIBRES_CHI2 * fitness.reduced:.3g} of each "
                  f"other ({FRAME_OR_FIBRES_CHI2:g} times the fit's chi2/nu), so the data do not "
                  "tell the fibres from the frame (the note above): the intervals hold the "
                  f"muscle fitted with either (the model-form terms frame and fibres); {check}"
                  if tied else
                  "; the intervals hold the muscle fitted with it (the model-form term fibres); "
-                 "measure the braid's fibres (a strand's force over its strain, times the "
-                 "strands) or use a stiffer braid, and check the frame's stiffness, then "
-                 "identify again")
+                 + check)
         fitness.fibres = {
             "strain_at_largest_tension": float(f"{strain:.3g}"),
             "largest_tension_N": float(f"{top_tension_N:.4g}"),
@@ -943,6 +938,7 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
                      f"(chi2/nu {with_fibres / fitness.nu:.3g}"
                      f"{', within the noise' if within else ''}), where a frame yielding under "
                      f"the pull lowers it by {lowered:.3g}{rest_said}{apart}"),
+            **({} if table is None else {"published_table": table}),
             "shift": {n: float(v) for n, v in zip(
                 best.names, _step(best, strain / FRAME_EPS_STEP * column), strict=True)}}
     if "frame" not in named:
@@ -978,6 +974,23 @@ def frame_hint(source, runs, best, fitness) -> dict | None:
                         else fix)),
             **({} if table is None else {"published_table": table}),
             "shift": {n: float(v) for n, v in zip(best.names, shift, strict=True)}}
+
+
+def fibres_advice(table: str | None, tied: bool) -> str:
+    """What the ``fibres:`` note says to do about stretching fibres (``tied``: with a frame the
+    data do not tell them from): measure them on the bench the runs were measured on, or, runs
+    of a published ``table`` (:func:`published_table`), whose bench and braid are its authors',
+    ask them."""
+    if table is not None:
+        asked = "their frame's stiffness and their braid's fibres" if tied else (
+            "their braid's fibres (a strand's force over its strain, times the strands)")
+        return (f"{table} was measured on its authors' bench and braid: ask them for {asked}, "
+                "else predict with the intervals")
+    if tied:
+        return ("check the frame's stiffness and measure the fibres (a strand's force over its "
+                "strain, times the strands), then identify again")
+    return ("measure the braid's fibres (a strand's force over its strain, times the strands) or "
+            "use a stiffer braid, and check the frame's stiffness, then identify again")
 
 
 def published_table(runs) -> str | None:

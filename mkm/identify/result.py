@@ -663,22 +663,20 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
     # the braid is tried without the bench, so first
     braid = next((c["other_braid"]["braid"] for c in cautions
                   if c["what"] == "braid, creep or load cell gain"), None)
+    published = (goodness.frame or goodness.fibres or {}).get("published_table")
     if goodness.frame and goodness.fibres:
         lacks = ("a yielding frame or stretching fibres (the data do not tell them apart: "
                  f"about {goodness.frame['stiffness_N_per_mm']:.3g} N/mm or "
                  f"{100 * goodness.fibres['strain_at_largest_tension']:.2g} % at the largest "
                  "tension, the notes above)")
-        fix = ("check the frame's stiffness and measure the fibres, then identify again; then "
-               if not goodness.frame.get("published_table") else
-               "ask the table's authors for their frame's stiffness and their braid's fibres, "
-               "else predict with the intervals, which hold the muscle fitted with either; then ")
-    elif goodness.frame and goodness.frame.get("published_table"):
-        lacks = (f"a frame yielding under the muscle's pull on the bench "
-                 f"{goodness.frame['published_table']} was measured on (about "
-                 f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above)")
-        fix = ("ask the table's authors for their frame's stiffness or the held lengths under "
-               "load, else predict with the intervals, which hold the muscle fitted with it; "
-               "then ")
+        fix = (_ask_authors("their frame's stiffness and their braid's fibres", "either")
+               if published else
+               "check the frame's stiffness and measure the fibres, then identify again; then ")
+    elif goodness.frame and published:
+        lacks = (f"a frame yielding under the muscle's pull on the bench {published} was "
+                 f"measured on (about {goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note "
+                 "above)")
+        fix = _ask_authors("their frame's stiffness or the held lengths under load", "it")
     elif goodness.frame:
         lacks = (f"a frame yielding under the muscle's pull (about "
                  f"{goodness.frame['stiffness_N_per_mm']:.3g} N/mm: the note above)")
@@ -688,7 +686,8 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
         lacks = ("a braid whose fibres stretch under their tension (about "
                  f"{100 * goodness.fibres['strain_at_largest_tension']:.2g} % at the largest: "
                  "the note above)")
-        fix = ("measure the braid's fibres or use a stiffer braid, and check the frame's "
+        fix = (_ask_authors("their braid's fibres", "it") if published else
+               "measure the braid's fibres or use a stiffer braid, and check the frame's "
                "stiffness, then identify again; then ")
     else:
         return (pulls_late_first(groups) if goodness.pulls_late
@@ -698,6 +697,13 @@ def _first(rubber: dict, goodness, groups, cautions=()) -> str:
                 f"may be what the fit lacks: identify again with --braid {braid}; if the misfit "
                 f"stays, {fix}")
     return f"first, {lacks} may be what the fit lacks: {fix}"
+
+
+def _ask_authors(what: str, fitted_with: str) -> str:
+    """What a verdict says to do about a frame or fibres of a published table's bench, which
+    its reader can neither stiffen nor measure: ask its authors for ``what``."""
+    return (f"ask the table's authors for {what}, else predict with the intervals, which hold "
+            f"the muscle fitted with {fitted_with}; then ")
 
 
 def pulls_late_first(groups) -> str:

@@ -3044,7 +3044,7 @@ def test_the_published_dmsp_10_with_an_accuracy_gives_what_its_page_says(tmp_pat
                        page).groups()
     table = tmp_path / "martens_boblan_2017_forcemaps.csv"
     table.write_bytes(published_table(table.name).read_bytes())
-    runs, _ = _import(mkm_cli, table, "--id", "dmsp-10", "--D0", "10", "--t0", "1.5", "--muscle",
+    runs, _ = _import(mkm_cli, table, "--id", "dmsp-10", "--D0", "10", "--t0", "1.8", "--muscle",
                       "Festo DMSP-10-250", "--accuracy", "force=0.5N+1%,pressure=0.01bar")
     by_eps = {r.meta.muscle.eps: str(r.path) for r in runs}
     code, _, err = mkm_cli(["identify", by_eps[0.064], by_eps[0.184], "--out",

@@ -737,8 +737,8 @@ def test_one_table_imported_twice_is_refused_not_counted_twice(tmp_path, mkm_run
     assert not (tmp_path / "id").exists()
     # imported again with an accuracy (published.md's DMSP-20-300 without one, design.md's
     # with): its steps.csv differ in the uncertainties, and the 2 measurements were fitted as 4
-    # runs; with another wall (published.md's DMSP-10-250 at 1.5 mm, design.md's at 1.8) the
-    # tubes differ, and nothing said the two were one file's imports
+    # runs; with another wall (one file imported at two walls) the tubes differ, and nothing
+    # said the two were one file's imports
     for declared in (["--t0", "3", "--accuracy", "force=1N+1%"], ["--t0", "2.5"]):
         code, out, err = mkm_run(["import", str(table), "--id", "lab", "--D0", "30", *declared,
                                   "--L0", "282", "--eps", "0", "--out", str(tmp_path / "again")])
