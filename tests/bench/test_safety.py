@@ -1840,16 +1840,16 @@ def test_a_final_record_refused_for_good_is_kept_in_the_marker_and_written_next(
         written.write_text(json.dumps(data))
     # the next command finds the disk still refusing run.json: the marker, which alone keeps
     # the outcome, was removed all the same; now it stays for the command after
-    from mkm.bench import unvented
+    from mkm.bench import storage
 
-    write_json = unvented.write_json_atomic
+    write_json = storage.write_json_atomic
 
     def still_refused(path, data):
         if path.name == "run.json" and refusing:
             raise refusal
         write_json(path, data)
 
-    monkeypatch.setattr(unvented, "write_json_atomic", still_refused)
+    monkeypatch.setattr(storage, "write_json_atomic", still_refused)  # a dead run's final record
     notes = []
     assert procedures.vent(config, notify=notes.append)["vented"]
     (said,) = notes
