@@ -20,11 +20,13 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "suite"))
 
 # `make test` shares the modules out between two processes (pytest-xdist, ``--dist loadfile``:
 # a module's fixtures are built once, in one process). These modules take the longest (the
-# site's build, the wheel's venv, the identifications); handed out first, neither process is
-# left running one of them alone at the end.
-LONGEST_FIRST = ("tests/test_docs.py", "tests/mkm/test_identify.py", "tests/mkm/test_install.py",
-                 "tests/mkm/test_report.py", "tests/mkm/test_identify_params.py",
-                 "tests/mkm/test_identify_terms.py")
+# identifications on the FE bench, the site's build and the records it quotes, the imports of
+# published tables: 311, 156 and 115 s of the suite's 1180 on an idle machine, then 62-41 s);
+# handed out first, longest first, neither process is left running one of them alone at the end.
+LONGEST_FIRST = ("tests/mkm/test_identify_terms.py", "tests/test_docs.py",
+                 "tests/bench/test_import.py", "tests/mkm/test_report.py",
+                 "tests/mkm/test_design.py", "tests/bench/test_safety.py",
+                 "tests/bench/test_recorder.py", "tests/mkm/test_identify_params.py")
 
 
 def pytest_configure(config):
