@@ -232,14 +232,19 @@ def test_unanswered_points_of_the_ratio_fit_are_said_as_such():
 GROUPS = ("theta0", "rubber", "offset")
 
 
-def _verdict(goodness, rubber: dict) -> str:
+#: identify's warning where the other braid takes the creep's place (a sleeve sliding on its tube)
+SLIDING_BRAID = {"what": "braid, creep or load cell gain", "other_braid": {"braid": "sliding"},
+                 "verdict": "...", "ready_if": "..."}
+
+
+def _verdict(goodness, rubber: dict, instrument_warnings=()) -> str:
     from types import SimpleNamespace
 
     from mkm.identify.result import Identification
 
-    return Identification._verdict_line(SimpleNamespace(goodness=goodness, rubber=rubber,
-                                                        groups=GROUPS, instrument_warnings=[],
-                                                        notes=[]))
+    return Identification._verdict_line(SimpleNamespace(
+        goodness=goodness, rubber=rubber, groups=GROUPS,
+        instrument_warnings=list(instrument_warnings), notes=[]))
 
 
 def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
@@ -289,13 +294,8 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
     # ... and after the other braid, where it takes the creep's place: bench_identify_wrong_
     # range's seed 20261609, a sleeve sliding on its tube, was sent to the frame first (a
     # frame lowered chi2 by 522, the sliding braid by 515 below the fit with the creep)
-    from mkm.identify.result import Identification
-
-    braid = {"what": "braid, creep or load cell gain", "other_braid": {"braid": "sliding"},
-             "verdict": "...", "ready_if": "..."}
-    sliding = Identification._verdict_line(SimpleNamespace(
-        goodness=SimpleNamespace(**{**vars(late), "frame": {"stiffness_N_per_mm": 1.7e4}}),
-        rubber=held, groups=GROUPS, instrument_warnings=[braid], notes=[]))
+    sliding = _verdict(SimpleNamespace(**{**vars(late), "frame": {"stiffness_N_per_mm": 1.7e4}}),
+                       held, [SLIDING_BRAID])
     assert ("the estimates may be biased; first, a sliding braid (the braid, creep or load "
             "cell note above) or a frame yielding under the muscle's pull (about 1.7e+04 N/mm: "
             "the note above) may be what the fit lacks: identify again with --braid sliding; "
@@ -304,10 +304,8 @@ def test_a_misfit_whose_ratio_was_not_tested_says_how_to_test_it_first():
             ) in sliding
     # the same where fibres are named in the frame's place: seeds 20261609 and 20261624, two
     # sliding sleeves, were sent to measure the braid's fibres (0.08 and 0.04 % at the largest)
-    fibred = Identification._verdict_line(SimpleNamespace(
-        goodness=SimpleNamespace(**{**vars(late), "fibres": {
-            "strain_at_largest_tension": 0.000839}}),
-        rubber=held, groups=GROUPS, instrument_warnings=[braid], notes=[]))
+    fibred = _verdict(SimpleNamespace(**{**vars(late), "fibres": {
+        "strain_at_largest_tension": 0.000839}}), held, [SLIDING_BRAID])
     assert ("the estimates may be biased; first, a sliding braid (the braid, creep or load "
             "cell note above) or a braid whose fibres stretch under their tension (about 0.084 % "
             "at the largest: the note above) may be what the fit lacks: identify again with "
@@ -378,13 +376,8 @@ def test_a_frame_and_fibres_the_data_do_not_tell_apart_are_both_named():
     assert "first, a braid whose fibres stretch" in _verdict(
         SimpleNamespace(**{**vars(late), "fibres": fibres}), held)
     # after the other braid where that takes the creep's place
-    from mkm.identify.result import Identification
-
-    braid = {"what": "braid, creep or load cell gain", "other_braid": {"braid": "sliding"},
-             "verdict": "...", "ready_if": "..."}
-    sliding = Identification._verdict_line(SimpleNamespace(
-        goodness=SimpleNamespace(**{**vars(late), "frame": frame, "fibres": fibres}),
-        rubber=held, groups=GROUPS, instrument_warnings=[braid], notes=[]))
+    sliding = _verdict(SimpleNamespace(**{**vars(late), "frame": frame, "fibres": fibres}),
+                       held, [SLIDING_BRAID])
     assert ("first, a sliding braid (the braid, creep or load cell note above) or a yielding "
             "frame or stretching fibres (the data do not tell them apart: about 8.98e+03 N/mm "
             "or 0.19 % at the largest tension, the notes above) may be what the fit lacks: "
