@@ -92,6 +92,17 @@ def timed(argv, cwd: Path, repeats: int) -> tuple[list[float], list[float]]:
     return times, cpu
 
 
+def load_averages() -> tuple[float, float, float] | None:
+    """The machine's load averages over 1, 5 and 15 minutes (None where the OS keeps none)."""
+    return os.getloadavg() if hasattr(os, "getloadavg") else None
+
+
+def load_average() -> float | None:
+    """The last minute's load average (None where the OS keeps none)."""
+    loads = load_averages()
+    return None if loads is None else loads[0]
+
+
 def row(label: str, measured: tuple[list[float], list[float]], target: float | None,
         load: float | None) -> dict:
     """One command's row of the record (printed as it is made): its wall times' median, fastest
@@ -123,7 +134,7 @@ def measure(work: Path, repeats: int) -> list[dict]:
     if len(two) != 2 or len(pulling) != 4:
         raise SystemExit(f"expected two lengths at eps {IDENTIFY_EPS} and four with force, "
                          f"got {two} and {pulling}")
-    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
+    load = load_average()
     start, start_cpu = time.perf_counter(), _children_cpu_s()
     mkm(["identify", *two, "--out", "id"], work)
     first = [time.perf_counter() - start], [_children_cpu_s() - start_cpu]
@@ -134,7 +145,7 @@ def measure(work: Path, repeats: int) -> list[dict]:
         "mkm report (4 lengths) --calibration": (
             ["report", *pulling, "--calibration", "id/calibration.json"], TARGETS["report"])})
     for label, (argv, target) in commands.items():
-        load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
+        load = load_average()
         rows.append(row(label, timed(argv, work, repeats), target, load))
     return rows
 
@@ -144,12 +155,12 @@ def main(argv=None) -> dict:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--json", type=Path)
     args = parser.parse_args(argv)
-    load_before = os.getloadavg() if hasattr(os, "getloadavg") else None
+    load_before = load_averages()
     print(f"load average before: {load_before}, {os.cpu_count()} CPUs; median of "
           f"{args.repeats} runs")
     with tempfile.TemporaryDirectory() as work:
         rows = measure(Path(work), args.repeats)
-    load_after = os.getloadavg() if hasattr(os, "getloadavg") else None
+    load_after = load_averages()
     print(f"load average after: {load_after}")
     from mkm.core.records import provenance
 
